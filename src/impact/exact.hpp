@@ -1,0 +1,91 @@
+// The exact, event-driven solution of (2-1)-(2-4) for a constant body force f: free flight
+// u = u0 + v0 s + f s^2/2 between impacts, Newton's impact law v+ = -e v- at each impact (e = COR,
+// or e = 1 when the scene gives no COR), and, for f < 0 and e < 1, the Zeno accumulation of impacts
+// at a finite time after which the particle rests on the floor with N = -f.
+// It is the reference for every error measured in this project.
+//
+// Everything is in closed form (no event loop, no accumulated flight times), so at(), impulse() and
+// impacts_until() cost O(1) at any t, e.g. after 1e4 bounces: the bounce index comes from
+// inverting t_k with a logarithm, checked against impact_time() (a bounded bisection on those
+// times only right before t_inf, where rounding makes many t_k coincide). With g = -f > 0 and V1 the speed of
+// the first impact, impact k >= 1 has speed e^(k-1) V1 and happens at
+//   t_k = t1 + (2 V1 / g) (e + e^2 + ... + e^(k-1)),   t_inf = t1 + 2 e V1 / (g (1 - e)).
+// Conventions:
+//  - A particle that starts on the floor moving down (u0 = phi, v0 < 0) has its first impact at
+//    t1 = 0, taken as happening at 0+: at(0) is the initial state, impacts_until(0) = 0, and the
+//    impact is counted in every interval (0, t], t > 0, so it lies in the first step (0, h] and
+//    impulse(0, T) = v(T) - v(0) - f T holds with v(0) = v0 (the identity (4-9)).
+//  - u0 = phi, v0 = 0 with f < 0 rests from t = 0 (rest_time() = 0, N = -f); with f = 0 it stays
+//    put (rest_time() = 0, N = 0). u0 = phi, v0 >= 0, f >= 0 has no impact, and neither has a
+//    grazing touch with zero speed (f > 0, v0^2 = 2 f (u0 - phi)).
+//  - After a plastic impact (e = 0) the particle rests if f <= 0; for f > 0 it lifts off again.
+//  - Past the Zeno time there were infinitely many impacts: impacts_until() then returns
+//    INT64_MAX / 2, a cap larger than any count reached before t_inf.
+//  - The constructor throws std::invalid_argument for non-finite data, u0 < phi or COR outside
+//    [0, 1]. A time that overflows (e.g. a Zeno time beyond DBL_MAX for a vanishing f) is treated
+//    as never reached.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+
+#include "impact/model.hpp"
+
+namespace impact {
+
+class MethodParams;
+
+class ExactSolution {
+ public:
+  ExactSolution(const Model& model, const State& initial);
+
+  // State at time t >= 0; v is right-continuous (the post-impact velocity at an impact instant),
+  // except that at(t) for t <= 0 is the initial state (see the impact at 0+ above).
+  State at(double t) const;
+  // Contact impulse delivered in (t0, t1]: the impact jumps (1 + e) V_k plus the resting force -f
+  // over the time spent resting; exactly 0 when neither happens in (t0, t1] or when t1 <= t0.
+  double impulse(double t0, double t1) const;
+  // Number of impacts in (0, t] (INT64_MAX / 2 once the Zeno time is reached).
+  std::int64_t impacts_until(double t) const;
+  // Time of the k-th impact, k >= 1, if there is one.
+  std::optional<double> impact_time(std::int64_t k) const;
+  // Speed just before the k-th impact.
+  std::optional<double> impact_speed(std::int64_t k) const;
+  // From this time on the particle rests on the floor (Zeno time, or the plastic impact time).
+  std::optional<double> rest_time() const;
+
+ private:
+  struct Impl;
+  Model model_;
+  State initial_;
+  double e_;
+  std::optional<double> t1_;   // first impact
+  double V1_ = 0;              // speed just before the first impact
+  std::optional<double> rest_;
+};
+
+struct ExactParams {};
+
+class ExactStepper {
+ public:
+  static ExactParams read_params(MethodParams&) { return {}; }
+  ExactStepper(const Model& model, double h, const ExactParams&, const State& initial)
+      : solution_(model, initial), model_(model), h_(h) {}
+
+  // Samples the exact solution at t_{l+1} = (l+1) h; N^l = impulse in (t_l, t_{l+1}] / h.
+  StepInfo step(State& s, std::int64_t l) const {
+    const double t0 = static_cast<double>(l) * h_, t1 = static_cast<double>(l + 1) * h_;
+    s = solution_.at(t1);
+    StepInfo info;
+    info.contact_force = solution_.impulse(t0, t1) / h_;
+    return info;
+  }
+  const ExactSolution& solution() const { return solution_; }
+
+ private:
+  ExactSolution solution_;
+  Model model_;
+  double h_;
+};
+
+}  // namespace impact

@@ -1,0 +1,41 @@
+// Normal compliance (Section 5): the Signorini condition replaced by N = c_N max(phi - u, 0), a
+// force that pushes up when the particle penetrates the floor. (The paper writes p(u - phi); with
+// p(r) = c_N max(r, 0) that would pull on a particle above the floor: see paper_notes/.)
+// Integrated with GSL's odeiv2 drivers between grid points t_l = l h.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "impact/model.hpp"
+
+namespace impact {
+
+class MethodParams;
+
+struct PenaltyParams {
+  double stiffness = 1e6;         // c_N
+  std::string stepper = "rk8pd";  // GSL odeiv2 stepper name
+  double rtol = 1e-10;
+  double atol = 1e-12;
+};
+
+class Penalty {
+ public:
+  static PenaltyParams read_params(MethodParams& p);
+  Penalty(const Model& model, double h, const PenaltyParams& params);
+  Penalty(Penalty&&) noexcept;
+  Penalty& operator=(Penalty&&) noexcept;
+  ~Penalty();
+
+  // Integrates from t_l to t_{l+1}; N^l is the impulse of the compliance force over the step / h,
+  // iterations the number of GSL steps taken.
+  StepInfo step(State& s, std::int64_t l);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace impact
