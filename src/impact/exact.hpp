@@ -7,8 +7,8 @@
 // Everything is in closed form (no event loop, no accumulated flight times), so at(), impulse() and
 // impacts_until() cost O(1) at any t, e.g. after 1e4 bounces: the bounce index comes from
 // inverting t_k with a logarithm, checked against impact_time() (a bounded bisection on those
-// times only right before t_inf, where rounding makes many t_k coincide). With g = -f > 0 and V1 the speed of
-// the first impact, impact k >= 1 has speed e^(k-1) V1 and happens at
+// times only right before t_inf, where rounding makes many t_k coincide). With g = -f > 0 and V1
+// the speed of the first impact, impact k >= 1 has speed e^(k-1) V1 and happens at
 //   t_k = t1 + (2 V1 / g) (e + e^2 + ... + e^(k-1)),   t_inf = t1 + 2 e V1 / (g (1 - e)).
 // Conventions:
 //  - A particle that starts on the floor moving down (u0 = phi, v0 < 0) has its first impact at
@@ -59,8 +59,8 @@ class ExactSolution {
   Model model_;
   State initial_;
   double e_;
-  std::optional<double> t1_;   // first impact
-  double V1_ = 0;              // speed just before the first impact
+  std::optional<double> t1_;  // first impact
+  double V1_ = 0;             // speed just before the first impact
   std::optional<double> rest_;
 };
 
