@@ -1,5 +1,7 @@
 #include "impact/registry.hpp"
 
+#include <string>
+
 #include "impact/scene.hpp"
 
 namespace impact {
@@ -24,7 +26,9 @@ AnyStepper build(const Scene& scene, Args&&... args) {
 
 }  // namespace
 
-std::span<const MethodInfo> methods() { return kMethods; }
+std::span<const MethodInfo> methods() {
+  return kMethods;
+}
 
 const MethodInfo* find_method(std::string_view name) {
   for (const auto& m : kMethods)
@@ -36,7 +40,15 @@ AnyStepper make_stepper(const Scene& scene) {
   if (scene.method == "direct") return build<Direct>(scene);
   if (scene.method == "fb_newton") return build<FbNewton>(scene);
   if (scene.method == "moreau_jean") return build<MoreauJean>(scene);
-  if (scene.method == "penalty") return build<Penalty>(scene);
+  if (scene.method == "penalty") {
+    // Compliance has no impact law to apply a COR to: refuse rather than silently run elastic.
+    if (scene.model.cor)
+      throw SceneError(
+          scene.source + ": floor.cor = " + std::to_string(*scene.model.cor) +
+          ": method 'penalty' has no restitution law (its compliance contact is "
+          "elastic); remove floor.cor or choose direct, fb_newton, moreau_jean or exact");
+    return build<Penalty>(scene);
+  }
   if (scene.method == "exact") return build<ExactStepper>(scene, scene.initial);
   throw SceneError(scene.source + ": method.name = \"" + scene.method + "\": unknown method");
 }

@@ -1,0 +1,267 @@
+#include "impact/penalty.hpp"
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_odeiv2.h>
+
+#include <algorithm>
+#include <array>
+#include <climits>
+#include <cmath>
+#include <limits>
+#include <new>
+#include <numbers>
+#include <stdexcept>
+#include <string_view>
+#include <vector>
+
+#include "impact/scene.hpp"
+
+namespace impact {
+namespace {
+
+struct StepperType {
+  std::string_view name;
+  const gsl_odeiv2_step_type* const* type;  // GSL exports the types as pointer variables
+};
+
+// Every odeiv2 stepper. The implicit ones (rk1imp, rk2imp, rk4imp, bsimp, msbdf) use the Jacobian.
+const StepperType kSteppers[] = {
+    {"rk8pd", &gsl_odeiv2_step_rk8pd},     {"rkf45", &gsl_odeiv2_step_rkf45},
+    {"rkck", &gsl_odeiv2_step_rkck},       {"rk4", &gsl_odeiv2_step_rk4},
+    {"rk2", &gsl_odeiv2_step_rk2},         {"msbdf", &gsl_odeiv2_step_msbdf},
+    {"msadams", &gsl_odeiv2_step_msadams}, {"rk4imp", &gsl_odeiv2_step_rk4imp},
+    {"rk2imp", &gsl_odeiv2_step_rk2imp},   {"rk1imp", &gsl_odeiv2_step_rk1imp},
+    {"bsimp", &gsl_odeiv2_step_bsimp},
+};
+
+const gsl_odeiv2_step_type* find_stepper(std::string_view name) {
+  for (const auto& s : kSteppers)
+    if (s.name == name) return *s.type;
+  return nullptr;
+}
+
+// A bound on the ODE steps of one grid step, so that a tolerance the stepper cannot meet ends the
+// run with converged = false instead of looping (practically) forever.
+constexpr unsigned long kMaxOdeSteps = 1'000'000;
+
+constexpr double kNever = std::numeric_limits<double>::infinity();
+
+// The smallest tau > 0 with g + v tau + f tau^2 / 2 = 0, or +inf, from a gap g > 0 (or g = 0
+// leaving the floor, v > 0): when free flight (the exact solution while N = 0) reaches the floor.
+// Roots in the cancellation-free form.
+double time_to_floor(double g, double v, double f) {
+  const double a = 0.5 * f;
+  if (a == 0.0) return v < 0.0 ? g / -v : kNever;
+  const double disc = v * v - 4.0 * a * g;
+  if (disc < 0.0) return kNever;
+  const double q = -0.5 * (v + std::copysign(std::sqrt(disc), v));
+  double tau = kNever;
+  for (double r : {q / a, g / q})
+    if (r > 0.0 && r < tau) tau = r;
+  return tau;
+}
+
+// The tau >= 0 at which a particle in contact (g <= 0) leaves the floor, or +inf if it never
+// does. In contact g'' = f - c_N g: an oscillation g = g_eq + R cos(w tau - theta) about
+// g_eq = f / c_N, w = sqrt(c_N), which leaves the floor rising (sin(w tau - theta) < 0) at
+// cos(w tau - theta) = -g_eq / R.
+double time_to_exit(double g, double v, double f, double w) {
+  const double g_eq = f / (w * w);
+  const double A = g - g_eq, B = v / w;
+  const double R = std::hypot(A, B);
+  if (!(R > 0.0)) return kNever;  // at rest at g_eq <= 0
+  const double c = -g_eq / R;
+  if (c >= 1.0) return kNever;  // the oscillation stays below the floor (resting contact)
+  if (c <= -1.0) return 0.0;    // it touches the floor only at its lowest point
+  // The phase now is -theta: in (-pi, 0) while rising (v > 0), where the exit is still ahead; in
+  // [-pi, 0] taken as [0, pi] while falling, which puts the exit a full turn later.
+  double theta = std::atan2(B, A);
+  if (v <= 0.0) theta = -std::fabs(theta);
+  const double delta = theta - std::acos(c);
+  return (v > 0.0 ? std::fmax(delta, 0.0) : delta + 2.0 * std::numbers::pi) / w;
+}
+
+struct DriverFree {
+  void operator()(gsl_odeiv2_driver* d) const { gsl_odeiv2_driver_free(d); }
+};
+
+}  // namespace
+
+// The ODE is integrated in the gap g = u - phi rather than u, so that rtol measures the penetration
+// and not the floor's distance from the origin: y = (g, v, P) with
+//   g' = v,  v' = f + N,  P' = N,  N = c_N max(-g, 0),
+// where P, the impulse delivered since the last reset, gives N^l = (P(t_{l+1}) - P(t_l)) / h, the
+// meaning of N^l in (4-1) (model.hpp). v - P - f t is a linear invariant, which every Runge-Kutta
+// and linear multistep method keeps up to rounding, so h sum N^l = v^n - v^0 - f T holds to
+// rounding whatever the tolerances.
+//
+// The Impl lives on the heap and is never moved: gsl_odeiv2_system::params points to it and the
+// driver points to `sys`, so moving a Penalty (its unique_ptr) keeps both pointers valid.
+struct Penalty::Impl {
+  Impl(const Model& model, double h, const PenaltyParams& params);
+  Impl(const Impl&) = delete;
+  Impl& operator=(const Impl&) = delete;
+
+  static int rhs(double t, const double y[], double dydt[], void* self);
+  static int jacobian(double t, const double y[], double* dfdy, double dfdt[], void* self);
+
+  double f;
+  double phi;
+  double h;
+  double c_N;
+  double w;     // sqrt(c_N): the contact oscillates at this angular frequency
+  double tiny;  // a piece shorter than this is not worth splitting off: 1e-6 of a contact
+  gsl_odeiv2_system sys;
+  std::unique_ptr<gsl_odeiv2_driver, DriverFree> driver;
+  std::array<double, 3> y{};
+  bool contact_piece = false;  // the piece being integrated is a contact, for the Jacobian at g = 0
+  // What the last successful step left: its l + 1 and the state it wrote to the caller's s.
+  bool needs_reset = true;  // before the next step: the first one, or the last one failed
+  std::int64_t next_l = 0;
+  State last;
+};
+
+Penalty::Impl::Impl(const Model& model, double grid_h, const PenaltyParams& params)
+    : f(model.f), phi(model.phi), h(grid_h), c_N(params.stiffness) {
+  if (!(h > 0.0) || !std::isfinite(h)) throw std::invalid_argument("Penalty: h must be > 0");
+  if (!(c_N > 0.0) || !std::isfinite(c_N))
+    throw std::invalid_argument("Penalty: stiffness c_N must be > 0 and finite");
+  if (!(params.rtol > 0.0) || !(params.atol > 0.0))
+    throw std::invalid_argument("Penalty: rtol and atol must be > 0");
+  const gsl_odeiv2_step_type* type = find_stepper(params.stepper);
+  if (!type) throw std::invalid_argument("Penalty: unknown GSL stepper \"" + params.stepper + "\"");
+  w = std::sqrt(c_N);
+  const double contact_time = std::numbers::pi / w;  // the duration of a contact when f = 0
+  tiny = 1e-6 * contact_time;
+  // GSL's default error handler aborts the process (e.g. on "step size too small"); every GSL
+  // status is checked here instead. The handler is process-wide state, so this also silences it
+  // for any other GSL user in the program, who must then check statuses too.
+  gsl_set_error_handler_off();
+  sys = gsl_odeiv2_system{&Impl::rhs, &Impl::jacobian, 3, this};
+  // The first trial step resolves a contact; it grows by up to 5x per step in free flight.
+  driver.reset(gsl_odeiv2_driver_alloc_y_new(&sys, type, std::min(h, contact_time / 16),
+                                             params.atol, params.rtol));
+  if (!driver) throw std::bad_alloc();
+  gsl_odeiv2_driver_set_nmax(driver.get(), kMaxOdeSteps);
+}
+
+int Penalty::Impl::rhs(double, const double y[], double dydt[], void* self) {
+  const Impl& m = *static_cast<const Impl*>(self);
+  // A non-finite stage (a step so large it overflowed) is a recoverable failure: GSL retries with
+  // a smaller step. (The error control would let it through: GSL's max ignores NaN.)
+  if (!std::isfinite(y[0]) || !std::isfinite(y[1])) return GSL_FAILURE;
+  const double N = m.c_N * std::fmax(-y[0], 0.0);
+  dydt[0] = y[1];
+  dydt[1] = m.f + N;
+  dydt[2] = N;
+  return GSL_SUCCESS;
+}
+
+// The exact Jacobian (msbdf and the implicit Runge-Kutta steppers need it): dN/dg = -c_N in
+// contact, 0 off it; at g = 0 exactly, the one-sided derivative of the piece being integrated.
+int Penalty::Impl::jacobian(double, const double y[], double* dfdy, double dfdt[], void* self) {
+  const Impl& m = *static_cast<const Impl*>(self);
+  const bool contact = y[0] < 0.0 || (y[0] == 0.0 && m.contact_piece);
+  const double dN = contact ? -m.c_N : 0.0;
+  const double J[9] = {0.0, 1.0, 0.0,   // g' = v
+                       dN,  0.0, 0.0,   // v' = f + N
+                       dN,  0.0, 0.0};  // P' = N
+  std::copy(J, J + 9, dfdy);
+  std::fill(dfdt, dfdt + 3, 0.0);
+  return GSL_SUCCESS;
+}
+
+PenaltyParams Penalty::read_params(MethodParams& p) {
+  PenaltyParams params;
+  params.stiffness = p.number("stiffness", params.stiffness, 0.0, 1e15, true);
+  std::vector<std::string_view> names;
+  for (const auto& s : kSteppers) names.push_back(s.name);
+  params.stepper = p.choice("stepper", params.stepper, names);
+  params.rtol = p.number("rtol", params.rtol, 0.0, 1.0, true);
+  params.atol = p.number("atol", params.atol, 0.0, 1.0, true);
+  return params;
+}
+
+Penalty::Penalty(const Model& model, double h, const PenaltyParams& params)
+    : impl_(std::make_unique<Impl>(model, h, params)) {}
+Penalty::Penalty(Penalty&&) noexcept = default;
+Penalty& Penalty::operator=(Penalty&&) noexcept = default;
+Penalty::~Penalty() = default;
+
+// One grid step, t_l = l h to t_{l+1} = (l+1) h, both computed from l (never accumulated).
+//
+// Driver state: the adapted step size (and a multistep method's history) is kept from one grid
+// step to the next; that is what makes free flight cost about one ODE step per grid step. The
+// driver is reset only when the caller's state is not the one the previous step produced (a
+// different l, or s changed in between) or that step failed: msbdf and msadams ignore the y they
+// are given once started, so a changed state would otherwise be silently dropped.
+//
+// Pieces: the right-hand side is only Lipschitz where the particle reaches or leaves the floor
+// (N has a kink there). A step that straddles a kink loses the stepper's order while its error
+// estimate may not notice (with a grid point inside the contact, rk4imp and bsimp ended 5-6 digits
+// short of their tolerance), and an adaptive step in free flight can jump over a whole contact,
+// pi/sqrt(c_N) long, with no stage landing in it: the particle then goes through the floor. Both
+// instants are known in closed form from the state, since each phase is linear: a parabola off the
+// floor (time_to_floor), a harmonic oscillation in contact (time_to_exit). So a grid step is
+// integrated in smooth pieces that end at them. The driver is reset at each kink, so that a
+// multistep method does not extrapolate its history across it; the step size d->h is kept.
+//
+// iterations = the ODE steps GSL accepted (driver->n summed over the pieces), not counting
+// rejected trial steps. A failure (more than kMaxOdeSteps steps, a tolerance GSL cannot meet, a
+// non-finite state) gives converged = false and leaves s at its t_l value (finite if it was).
+//
+// The COR of the model is not used: compliance is its own impact law (elastic here, COR = 1).
+StepInfo Penalty::step(State& s, std::int64_t l) {
+  Impl& m = *impl_;
+  gsl_odeiv2_driver* d = m.driver.get();
+  if (m.needs_reset || l != m.next_l || s.u != m.last.u || s.v != m.last.v) {
+    gsl_odeiv2_driver_reset(d);
+    m.y = {s.u - m.phi, s.v, 0.0};
+  }
+  m.needs_reset = true;  // until this step succeeds
+  const double P0 = m.y[2];
+  double t = static_cast<double>(l) * m.h;
+  const double t_end = static_cast<double>(l + 1) * m.h;
+
+  StepInfo info;
+  unsigned long taken = 0;
+  int status = GSL_SUCCESS;
+  while (t < t_end) {
+    const double g = m.y[0], v = m.y[1];
+    bool flying = g > 0.0 || (g == 0.0 && v > 0.0);
+    double tau = flying ? time_to_floor(g, v, m.f) : time_to_exit(g, v, m.f, m.w);
+    if (tau < m.tiny) {  // at a kink already (up to rounding): the next piece is the other phase
+      flying = !flying;
+      tau = flying ? time_to_floor(0.0, v, m.f) : time_to_exit(0.0, v, m.f, m.w);
+    }
+    m.contact_piece = !flying;
+    const bool to_kink = tau < t_end - t;
+    double target = to_kink ? t + std::fmax(tau, m.tiny) : t_end;
+    if (!(target > t)) target = t_end;  // t so large that the piece is below its resolution
+    if (taken >= kMaxOdeSteps) {
+      status = GSL_EMAXITER;
+      break;
+    }
+    gsl_odeiv2_driver_set_nmax(d, kMaxOdeSteps - taken);
+    status = gsl_odeiv2_driver_apply(d, &t, target, m.y.data());
+    // On GSL_EMAXITER the driver has taken one step more than its count says.
+    taken += d->n + (status == GSL_EMAXITER ? 1 : 0);
+    if (status != GSL_SUCCESS) break;
+    if (to_kink) gsl_odeiv2_driver_reset(d);
+  }
+  info.iterations = static_cast<int>(std::min<unsigned long>(taken, INT_MAX));
+  if (status != GSL_SUCCESS ||
+      !(std::isfinite(m.y[0]) && std::isfinite(m.y[1]) && std::isfinite(m.y[2]))) {
+    info.converged = false;
+    return info;
+  }
+  info.contact_force = (m.y[2] - P0) / m.h;
+  s.u = m.y[0] + m.phi;
+  s.v = m.y[1];
+  m.last = s;
+  m.next_l = l + 1;
+  m.needs_reset = false;
+  return info;
+}
+
+}  // namespace impact

@@ -1,0 +1,284 @@
+// Normal compliance (Section 5), N = c_N max(phi - u, 0), against its closed forms: with f = 0 a
+// contact is half a period of the oscillator u'' = -c_N (u - phi), so it lasts pi/sqrt(c_N),
+// penetrates |v|/sqrt(c_N) and gives back the velocity it took (the energy v^2/2 + c_N pen^2/2 is
+// conserved).
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <numbers>
+#include <string>
+#include <utility>
+#include <variant>
+
+#include "impact/penalty.hpp"
+#include "impact/registry.hpp"
+#include "impact/scene.hpp"
+
+namespace {
+
+using impact::Model;
+using impact::Penalty;
+using impact::PenaltyParams;
+using impact::State;
+using impact::StepInfo;
+
+constexpr double kPi = std::numbers::pi;
+
+struct Run {
+  State s;
+  bool converged = true;
+  double min_N = std::numeric_limits<double>::infinity();
+  double min_u = std::numeric_limits<double>::infinity();
+  double impulse = 0;          // h sum N^l
+  long contact_ode_steps = 0;  // ODE steps of the grid steps with N^l > 0
+  double max_energy_drift = 0;
+};
+
+// Steps l = from .. to-1; the energy drift is that of v^2/2 - f u + c_N max(phi - u, 0)^2 / 2.
+Run run(Penalty& pen, const Model& model, double c_N, State s, double h, std::int64_t from,
+        std::int64_t to) {
+  auto energy = [&](const State& x) {
+    const double pen_depth = std::fmax(model.phi - x.u, 0.0);
+    return 0.5 * x.v * x.v - model.f * x.u + 0.5 * c_N * pen_depth * pen_depth;
+  };
+  Run r;
+  const double E0 = energy(s);
+  for (std::int64_t l = from; l < to; ++l) {
+    const StepInfo info = pen.step(s, l);
+    r.converged = r.converged && info.converged;
+    r.min_N = std::fmin(r.min_N, info.contact_force);
+    r.min_u = std::fmin(r.min_u, s.u);
+    r.impulse += h * info.contact_force;
+    if (info.contact_force > 0) r.contact_ode_steps += info.iterations;
+    r.max_energy_drift = std::fmax(r.max_energy_drift, std::fabs(energy(s) - E0));
+  }
+  r.s = s;
+  return r;
+}
+
+// |x - expected| <= tol, with no relative slack (Catch's Approx adds 100 float epsilons otherwise).
+Approx within(double expected, double tol) {
+  return Approx(expected).epsilon(0).margin(tol);
+}
+
+// The error an adaptive integration may commit: each accepted step keeps its local error below
+// atol + rtol |y| <= atol + rtol y_max, and with f = 0 free flight (u linear in t) is integrated
+// exactly, so only the steps of the contact count; a velocity error made there is carried for
+// `flight` time units into u.
+double error_bound(const PenaltyParams& p, const Run& r, double y_max, double flight) {
+  return (1 + flight) * static_cast<double>(r.contact_ode_steps) * (p.atol + p.rtol * y_max);
+}
+
+}  // namespace
+
+TEST_CASE("penalty: a contact is half a period of the oscillator, u(10) = 5 - pi/sqrt(c_N)",
+          "[penalty]") {
+  // u0 = 5, v0 = -1, f = 0: the floor is reached at t = 5, left at 5 + pi/sqrt(c_N) with v = +1,
+  // so u(10) = 10 - 5 - pi/sqrt(c_N).
+  const Model model{0.0, 0.0, {}};
+  const double h = 0.01;
+  for (const char* stepper : {"rk8pd", "msbdf"}) {
+    for (double c_N : {1e4, 1e6}) {
+      CAPTURE(stepper, c_N);
+      const PenaltyParams p{c_N, stepper, 1e-10, 1e-12};
+      Penalty pen(model, h, p);
+      const Run r = run(pen, model, c_N, {5.0, -1.0}, h, 0, 1000);
+      REQUIRE(r.converged);
+      const double bound = error_bound(p, r, 5.0, 5.0);
+      CAPTURE(r.contact_ode_steps, bound);
+      CHECK(r.s.u == within(5.0 - kPi / std::sqrt(c_N), bound));
+      CHECK(r.s.v == within(1.0, bound / 5));
+      CHECK(r.min_u >= -1.0 / std::sqrt(c_N) - bound);  // never deeper than the closed form
+      CHECK(r.max_energy_drift <= bound);
+    }
+  }
+}
+
+TEST_CASE("penalty: every GSL stepper resolves the bounce within its tolerance", "[penalty]") {
+  const Model model{0.0, 0.0, {}};
+  const double h = 0.01, c_N = 1e6;
+  for (const char* stepper : {"rk8pd", "rkf45", "rkck", "rk4", "rk2", "msbdf", "msadams", "rk4imp",
+                              "rk2imp", "rk1imp", "bsimp"}) {
+    CAPTURE(stepper);
+    const PenaltyParams p{c_N, stepper, 1e-7, 1e-9};
+    Penalty pen(model, h, p);
+    const Run r = run(pen, model, c_N, {5.0, -1.0}, h, 0, 1000);
+    REQUIRE(r.converged);
+    CHECK(r.s.u == within(5.0 - kPi / std::sqrt(c_N), error_bound(p, r, 5.0, 5.0)));
+  }
+}
+
+TEST_CASE("penalty: N^l >= 0 and h sum N^l = v(T) - v(0) - f T, with gravity and phi != 0",
+          "[penalty]") {
+  // Five bounces of 0.5 under f = -1. The impulse identity is exact up to rounding: v - P - f t
+  // is a linear invariant of every Runge-Kutta and multistep method.
+  const Model model{0.5, -1.0, {}};
+  const double h = 0.01, T = 10, c_N = 1e6;
+  for (const char* stepper : {"rk8pd", "msbdf", "rk4imp", "bsimp"}) {
+    CAPTURE(stepper);
+    Penalty pen(model, h, PenaltyParams{c_N, stepper, 1e-10, 1e-12});
+    const State s0{1.0, 0.0};
+    const Run r = run(pen, model, c_N, s0, h, 0, 1000);
+    REQUIRE(r.converged);
+    CHECK(r.min_N >= 0.0);
+    CHECK(r.impulse == within(r.s.v - s0.v - model.f * T, 1e-12));
+    CHECK(r.impulse > 5 * 2 * 0.99);               // five bounces, each reversing v = -1
+    CHECK(r.min_u > 0.5 - 1.01 / std::sqrt(c_N));  // the depth of a v = -1 contact, f/c_N aside
+    CHECK(r.max_energy_drift < 1e-6);              // compliance conserves energy; E(0) = 1
+  }
+}
+
+TEST_CASE("penalty: the penetration depth falls like 1/sqrt(c_N)", "[penalty]") {
+  // From the floor with v0 = -1 and h a sixteenth of the contact, so that the grid hits the
+  // deepest point (l = 8) and the exit (l = 16).
+  const Model model{0.0, 0.0, {}};
+  double previous_depth = 0;
+  for (double c_N : {1e4, 1e6, 1e8, 1e10, 1e12}) {
+    CAPTURE(c_N);
+    const double w = std::sqrt(c_N), h = kPi / (16 * w);
+    Penalty pen(model, h, PenaltyParams{c_N, "rk8pd", 1e-12, 1e-12 / w});
+    const Run r = run(pen, model, c_N, {0.0, -1.0}, h, 0, 16);
+    REQUIRE(r.converged);
+    const double depth = -r.min_u;
+    CHECK(depth * w == Approx(1.0).epsilon(1e-9));
+    CHECK(r.s.v == Approx(1.0).epsilon(1e-9));
+    if (previous_depth > 0) CHECK(previous_depth / depth == Approx(10.0).epsilon(1e-9));
+    previous_depth = depth;
+  }
+}
+
+TEST_CASE("penalty: the caller owns the state, also for a multistep method", "[penalty]") {
+  // Overwriting s at t = 3 with u = 1, v = -1 moves the contact to t = 4, so u(10) = 6 - pi/w.
+  // msbdf ignores the y it is given once started: Penalty must notice and restart it.
+  const Model model{0.0, 0.0, {}};
+  const double h = 0.01, c_N = 1e6;
+  for (const char* stepper : {"rk8pd", "msbdf"}) {
+    CAPTURE(stepper);
+    const PenaltyParams p{c_N, stepper, 1e-10, 1e-12};
+    Penalty pen(model, h, p);
+    REQUIRE(run(pen, model, c_N, {5.0, -1.0}, h, 0, 300).converged);
+    const Run r = run(pen, model, c_N, {1.0, -1.0}, h, 300, 1000);
+    REQUIRE(r.converged);
+    CHECK(r.s.u == within(6.0 - kPi / std::sqrt(c_N), error_bound(p, r, 5.0, 6.0)));
+  }
+}
+
+TEST_CASE("penalty: a moved Penalty carries on its integration unchanged", "[penalty]") {
+  const Model model{0.0, 0.0, {}};
+  const double h = 0.01, c_N = 1e6;
+  const PenaltyParams p{c_N, "msbdf", 1e-10, 1e-12};
+  Penalty reference(model, h, p);
+  const State expected = run(reference, model, c_N, {5.0, -1.0}, h, 0, 1000).s;
+
+  Penalty a(model, h, p);
+  State s = run(a, model, c_N, {5.0, -1.0}, h, 0, 450).s;  // stops just before the contact
+  Penalty b(std::move(a));
+  s = run(b, model, c_N, s, h, 450, 502).s;  // stops inside it
+  Penalty c(model, h, PenaltyParams{});
+  c = std::move(b);
+  s = run(c, model, c_N, s, h, 502, 1000).s;
+  CHECK(s.u == expected.u);
+  CHECK(s.v == expected.v);
+}
+
+TEST_CASE("penalty: a step GSL cannot complete reports non-convergence and keeps the state",
+          "[penalty]") {
+  const Model model{0.0, 0.0, {}};
+  SECTION("a tolerance below rounding") {
+    Penalty pen(model, 0.01, PenaltyParams{1e6, "rk8pd", 1e-300, 1e-300});
+    State s{0.001, -1.0};
+    const StepInfo info = pen.step(s, 0);
+    CHECK_FALSE(info.converged);
+    CHECK(s.u == 0.001);
+    CHECK(s.v == -1.0);
+    CHECK(info.contact_force == 0.0);
+  }
+  SECTION("a contact shorter than the resolution of t; then a fresh start recovers") {
+    const double c_N = 1e15;  // a contact of 1e-7 at t = 1e8, where ulp(t) = 1.5e-8
+    Penalty pen(model, 1.0, PenaltyParams{c_N, "rk8pd", 1e-10, 1e-12});
+    State s{0.0, -1.0};
+    CHECK_FALSE(pen.step(s, 100'000'000).converged);
+    CHECK(s.u == 0.0);
+    CHECK(s.v == -1.0);
+    // The next step restarts the driver from the caller's state.
+    s = {0.5, -1.0};
+    const StepInfo info = pen.step(s, 0);
+    CHECK(info.converged);
+    CHECK(s.u == within(0.5 - kPi / std::sqrt(c_N), 1e-8));
+    CHECK(s.v == within(1.0, 1e-8));
+    CHECK(info.contact_force == within(2.0, 1e-8));  // the impulse 2 |v| over h = 1
+  }
+  SECTION("a non-finite state") {
+    Penalty pen(model, 0.01, PenaltyParams{});
+    State s{std::numeric_limits<double>::quiet_NaN(), -1.0};
+    CHECK_FALSE(pen.step(s, 0).converged);
+    CHECK(s.v == -1.0);
+  }
+}
+
+namespace {
+
+impact::Scene penalty_scene(const std::string& method_keys) {
+  return impact::parse_scene(
+      "[initial]\nu0 = 5\nv0 = -1\n[time]\nT = 10\nh = 0.01\n[method]\nname = \"penalty\"\n" +
+          method_keys,
+      "test.toml");
+}
+
+// The SceneError message that reading [method] gives, or "" when it is accepted.
+std::string read_error(const std::string& method_keys) {
+  try {
+    impact::make_stepper(penalty_scene(method_keys));
+  } catch (const impact::SceneError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST_CASE("penalty: read_params reads stiffness, stepper, rtol and atol within their ranges",
+          "[penalty]") {
+  using Catch::Matchers::Contains;
+  {
+    const impact::Scene scene = penalty_scene("");
+    impact::MethodParams reader(scene);
+    const PenaltyParams p = Penalty::read_params(reader);
+    CHECK(p.stiffness == 1e6);
+    CHECK(p.stepper == "rk8pd");
+    CHECK(p.rtol == 1e-10);
+    CHECK(p.atol == 1e-12);
+  }
+  {
+    const impact::Scene scene =
+        penalty_scene("stiffness = 1e15\nstepper = \"msbdf\"\nrtol = 1e-8\natol = 1\n");
+    impact::MethodParams reader(scene);
+    const PenaltyParams p = Penalty::read_params(reader);
+    CHECK(p.stiffness == 1e15);
+    CHECK(p.stepper == "msbdf");
+    CHECK(p.rtol == 1e-8);
+    CHECK(p.atol == 1.0);
+    CHECK(std::holds_alternative<Penalty>(impact::make_stepper(scene)));
+  }
+  for (const char* name : {"rk8pd", "rkf45", "rkck", "rk4", "msbdf", "rk4imp", "bsimp", "rk2imp"})
+    CHECK(read_error("stepper = \"" + std::string(name) + "\"\n").empty());
+
+  CHECK_THAT(read_error("stepper = \"euler\"\n"),
+             Contains("test.toml") && Contains("method.stepper") && Contains("rk8pd") &&
+                 Contains("msbdf") && Contains("bsimp"));
+  CHECK_THAT(read_error("stepper = 4\n"), Contains("method.stepper"));
+  for (const char* bad : {"0", "-1", "1e16", "\"big\""}) {
+    CAPTURE(bad);
+    CHECK_THAT(read_error("stiffness = " + std::string(bad) + "\n"), Contains("method.stiffness"));
+  }
+  CHECK_THAT(read_error("stiffness = 0\n"), Contains("(0, 1e+15]"));
+  for (const char* key : {"rtol", "atol"}) {
+    for (const char* bad : {"0", "2", "-1e-10"}) {
+      CAPTURE(key, bad);
+      CHECK_THAT(read_error(std::string(key) + " = " + bad + "\n"),
+                 Contains("method." + std::string(key)) && Contains("(0, 1]"));
+    }
+  }
+  CHECK_THAT(read_error("stifness = 1e8\n"), Contains("stiffness") && Contains("stepper"));
+}
