@@ -4,7 +4,7 @@
 
 namespace impact {
 
-std::string describe_failure(std::int64_t l, double t, const State& s, const StepInfo& info) {
+void throw_step_failure(std::int64_t l, double t, State s, StepInfo info) {
   std::ostringstream msg;
   msg.precision(17);
   msg << "step " << l << " (from t = " << t << "): ";
@@ -12,7 +12,7 @@ std::string describe_failure(std::int64_t l, double t, const State& s, const Ste
     msg << "the solve did not converge after " << info.iterations << " iterations";
   else
     msg << "non-finite result u = " << s.u << ", v = " << s.v << ", N = " << info.contact_force;
-  return msg.str();
+  throw NumericalError(msg.str());
 }
 
 }  // namespace impact
