@@ -12,13 +12,14 @@ RESULTS := results
 EXPERIMENTS :=
 include $(wildcard experiments/*/experiment.mk)
 
-.PHONY: all deps configure build test clean experiments help $(EXPERIMENTS) $(EXPERIMENTS:%=run-%)
+.PHONY: all deps configure build test clean experiments claims help $(EXPERIMENTS) $(EXPERIMENTS:%=run-%)
 .DEFAULT_GOAL := help
 
 help:
 	@echo "make all          install what is missing, build, run every experiment, plot every figure"
 	@echo "make test         install what is missing, build, run the test suite (ctest)"
 	@echo "make <experiment> run one experiment and plot its figure; experiments: $(EXPERIMENTS)"
+	@echo "make claims       print the claims ledger's verdicts with the latest measured numbers"
 	@echo "make build        configure and build only ($(BUILD)/impact and the drivers)"
 	@echo "make clean        remove $(BUILD)/ and $(RESULTS)/"
 
@@ -46,6 +47,10 @@ $(EXPERIMENTS): build
 
 .SECONDEXPANSION:
 $(EXPERIMENTS:%=run-%): run-%: $$($$*_OUTPUTS)
+
+# The claims ledger's verdict table with the numbers of the latest results.
+claims: build
+	@$(BUILD)/impact-claims paper_notes/claims.md $(RESULTS)
 
 clean:
 	rm -rf $(BUILD) $(BUILD).configure.log $(RESULTS)
