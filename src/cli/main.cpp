@@ -1,11 +1,10 @@
 // The `impact` command: a thin layer over the library (scene -> solver -> CSV).
+#include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <string>
 #include <vector>
-
-#include <CLI/CLI.hpp>
 
 #include "impact/output.hpp"
 #include "impact/registry.hpp"
@@ -38,14 +37,13 @@ int run(const std::string& scene_path, const std::vector<std::string>& overrides
   csv.header();
   const std::int64_t every = scene.output.every, last = scene.grid.steps;
   std::int64_t next_row = 0;  // a countdown instead of l % every: no division in the step loop
-  RunSummary summary =
-      simulate(stepper, scene.initial, scene.grid,
-               [&](std::int64_t l, const State& s, const StepInfo& info) {
-                 if (l == next_row || l == last) {
-                   csv.row(scene.grid.t(l), s, info);
-                   next_row = l + every;
-                 }
-               });
+  RunSummary summary = simulate(stepper, scene.initial, scene.grid,
+                                [&](std::int64_t l, const State& s, const StepInfo& info) {
+                                  if (l == next_row || l == last) {
+                                    csv.row(scene.grid.t(l), s, info);
+                                    next_row = l + every;
+                                  }
+                                });
   file.commit();
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -83,10 +81,11 @@ int main(int argc, char** argv) {
   bool quiet = false;
   run_cmd->add_option("SCENE", scene_path, "Scene file (TOML); see README.md, 'Scenes'")
       ->required();
-  run_cmd->add_option("--set", overrides,
-                      "Override or add a scene key, table.key=value; the value is read as TOML "
-                      "(a bare word as a string), e.g. --set time.h=1e-4 --set floor.cor=0.5 "
-                      "--set method.name=exact. Repeatable.")
+  run_cmd
+      ->add_option("--set", overrides,
+                   "Override or add a scene key, table.key=value; the value is read as TOML "
+                   "(a bare word as a string), e.g. --set time.h=1e-4 --set floor.cor=0.5 "
+                   "--set method.name=exact. Repeatable.")
       ->allow_extra_args(false);  // one value per --set, so `--set a=1 SCENE` still sees SCENE
   run_cmd->add_option("--out,-o", out_path,
                       "Output CSV file (default: standard output). Written to a temporary file "

@@ -12,7 +12,8 @@
 namespace impact {
 namespace {
 
-// The temporary file being written, removed by the signal handler if the user interrupts a run.
+// The temporary file being written, removed by the signal handler if the user interrupts a run
+// (one per process: the CLI writes one output at a time).
 char g_temp_path[4096];
 
 extern "C" void remove_temp_and_exit(int sig) {
@@ -21,7 +22,9 @@ extern "C" void remove_temp_and_exit(int sig) {
   std::raise(sig);
 }
 
-std::string why() { return std::strerror(errno); }
+std::string why() {
+  return std::strerror(errno);
+}
 
 }  // namespace
 
@@ -49,8 +52,8 @@ AtomicFile::AtomicFile(const std::string& path) : path_(path) {
     unlink(temp_.c_str());
     throw OutputError(path + ": cannot open the output file: " + why(), true);
   }
-  static std::vector<char> buffer(1 << 20);
-  std::setvbuf(stream_, buffer.data(), _IOFBF, buffer.size());
+  buffer_.resize(1 << 20);
+  std::setvbuf(stream_, buffer_.data(), _IOFBF, buffer_.size());
   if (temp_.size() < sizeof g_temp_path) {
     std::memcpy(g_temp_path, temp_.c_str(), temp_.size() + 1);
     std::signal(SIGINT, remove_temp_and_exit);
@@ -112,11 +115,21 @@ void CsvWriter::row(double t, const State& s, const StepInfo& info) {
   for (Channel c : channels_) {
     *p++ = ',';
     switch (c) {
-      case Channel::u: p = format_double(p, buf + sizeof buf, s.u); break;
-      case Channel::v: p = format_double(p, buf + sizeof buf, s.v); break;
-      case Channel::N: p = format_double(p, buf + sizeof buf, info.contact_force); break;
-      case Channel::E: p = format_double(p, buf + sizeof buf, energy(model_, s)); break;
-      case Channel::iterations: p = std::to_chars(p, buf + sizeof buf, info.iterations).ptr; break;
+      case Channel::u:
+        p = format_double(p, buf + sizeof buf, s.u);
+        break;
+      case Channel::v:
+        p = format_double(p, buf + sizeof buf, s.v);
+        break;
+      case Channel::N:
+        p = format_double(p, buf + sizeof buf, info.contact_force);
+        break;
+      case Channel::E:
+        p = format_double(p, buf + sizeof buf, energy(model_, s));
+        break;
+      case Channel::iterations:
+        p = std::to_chars(p, buf + sizeof buf, info.iterations).ptr;
+        break;
     }
   }
   *p++ = '\n';

@@ -35,6 +35,7 @@ class AtomicFile {
  private:
   std::string path_, temp_;
   std::FILE* stream_ = nullptr;
+  std::vector<char> buffer_;
   bool committed_ = false;
 };
 

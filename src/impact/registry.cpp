@@ -1,5 +1,6 @@
 #include "impact/registry.hpp"
 
+#include <sstream>
 #include <string>
 
 #include "impact/scene.hpp"
@@ -14,6 +15,12 @@ constexpr MethodInfo kMethods[] = {
     {"penalty", true, "normal compliance N = c_N max(phi - u, 0), GSL odeiv2"},
     {"exact", false, "event-driven closed-form solution sampled on t = l h"},
 };
+
+std::string show_number(double x) {
+  std::ostringstream out;
+  out << x;
+  return out.str();
+}
 
 template <class Stepper, class... Args>
 AnyStepper build(const Scene& scene, Args&&... args) {
@@ -44,7 +51,7 @@ AnyStepper make_stepper(const Scene& scene) {
     // Compliance has no impact law to apply a COR to: refuse rather than silently run elastic.
     if (scene.model.cor)
       throw SceneError(
-          scene.source + ": floor.cor = " + std::to_string(*scene.model.cor) +
+          scene.source + ": floor.cor = " + show_number(*scene.model.cor) +
           ": method 'penalty' has no restitution law (its compliance contact is "
           "elastic); remove floor.cor or choose direct, fb_newton, moreau_jean or exact");
     return build<Penalty>(scene);

@@ -218,8 +218,8 @@ Scene build(toml::table root, const std::string& source) {
         }
         if (!ok)
           r.fail_value("output.channels", item,
-                       "is not a channel method '" + scene.method + "' can produce (allowed: " +
-                           join(allowed) + ")");
+                       "is not a channel method '" + scene.method +
+                           "' can produce (allowed: " + join(allowed) + ")");
       }
     }
   }
@@ -239,11 +239,16 @@ Scene parse_with(toml::table root, const std::string& source,
 
 std::string_view channel_name(Channel c) {
   switch (c) {
-    case Channel::u: return "u";
-    case Channel::v: return "v";
-    case Channel::N: return "N";
-    case Channel::E: return "E";
-    case Channel::iterations: return "iterations";
+    case Channel::u:
+      return "u";
+    case Channel::v:
+      return "v";
+    case Channel::N:
+      return "N";
+    case Channel::E:
+      return "E";
+    case Channel::iterations:
+      return "iterations";
   }
   return "?";
 }
@@ -255,7 +260,8 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   } catch (const toml::parse_error& e) {
     std::ostringstream msg;
     msg << path;
-    if (e.source().begin.line > 0) msg << ":" << e.source().begin.line << ":" << e.source().begin.column;
+    if (e.source().begin.line > 0)
+      msg << ":" << e.source().begin.line << ":" << e.source().begin.column;
     msg << ": not a valid TOML scene: " << e.description();
     throw SceneError(msg.str());
   }
@@ -305,8 +311,8 @@ std::int64_t MethodParams::integer(std::string_view key, std::int64_t fallback, 
   if (!node) return fallback;
   if (!node->is_integer() || node->as_integer()->get() < lo || node->as_integer()->get() > hi)
     throw SceneError(scene_.source + ": method." + std::string(key) + " = " + show(*node) +
-                     ": must be an integer in [" + std::to_string(lo) + ", " +
-                     std::to_string(hi) + "]");
+                     ": must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) +
+                     "]");
   return node->as_integer()->get();
 }
 
@@ -327,9 +333,9 @@ void MethodParams::reject_unread() const {
     for (const auto& r : read_) read = read || r == key.str();
     if (!read) {
       std::vector<std::string_view> names(read_.begin(), read_.end());
-      throw SceneError(scene_.source + ": method." + std::string(key.str()) + " = " +
-                       show(node) + ": unknown key for method '" + scene_.method +
-                       "' (allowed: " + join(names) + ")");
+      throw SceneError(scene_.source + ": method." + std::string(key.str()) + " = " + show(node) +
+                       ": unknown key for method '" + scene_.method + "' (allowed: " + join(names) +
+                       ")");
     }
   }
 }

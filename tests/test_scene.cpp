@@ -1,0 +1,428 @@
+// Scene files: what is accepted, what each absent table means, and that every rejection throws
+// SceneError with a message naming the file, the key, the value and what is allowed.
+#include <stdlib.h>  // mkdtemp
+
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "impact/scene.hpp"
+
+using Catch::Contains;
+using impact::Channel;
+using impact::parse_scene;
+using impact::SceneError;
+
+// A SceneError's message in test output.
+template <>
+struct Catch::StringMaker<SceneError> {
+  static std::string convert(const SceneError& e) { return '"' + std::string(e.what()) + '"'; }
+};
+
+namespace {
+
+// Matches a SceneError whose message satisfies a string matcher.
+template <class Inner>
+class SceneErrorSays : public Catch::MatcherBase<SceneError> {
+ public:
+  explicit SceneErrorSays(Inner inner) : inner_(std::move(inner)) {}
+  bool match(const SceneError& e) const override { return inner_.match(e.what()); }
+  std::string describe() const override {
+    return "is a SceneError whose message " + inner_.describe();
+  }
+
+ private:
+  Inner inner_;
+};
+
+// The expression throws SceneError (not just any exception) and its message matches.
+#define CHECK_SCENE_ERROR(expr, matcher) \
+  CHECK_THROWS_MATCHES(expr, SceneError, SceneErrorSays<decltype(matcher)>(matcher))
+
+// A complete, valid scene; the cases below change one thing at a time.
+const std::string kTime = "[time]\nT = 10.0\nh = 0.001\n";
+const std::string kInitial = "[initial]\nu0 = 5.0\nv0 = -1.0\n";
+const std::string kDirect = "[method]\nname = \"direct\"\n";
+const std::string kBase = kInitial + kTime + kDirect;
+
+impact::Scene parse(const std::string& text, const std::vector<std::string>& overrides = {}) {
+  return parse_scene(text, "scene.toml", overrides);
+}
+
+std::string with_method(const std::string& method_table) {
+  return kInitial + kTime + method_table;
+}
+
+// A scratch directory under /tmp, removed with everything in it.
+struct TempDir {
+  std::string path;
+  TempDir() {
+    char name[] = "/tmp/impact_scene_test_XXXXXX";
+    REQUIRE(mkdtemp(name) != nullptr);
+    path = name;
+  }
+  ~TempDir() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path, ignored);
+  }
+  std::string write(const std::string& file, const std::string& text) const {
+    std::string full = path + "/" + file;
+    std::ofstream(full) << text;
+    return full;
+  }
+};
+
+}  // namespace
+
+TEST_CASE("scene: absent tables mean phi = 0, no COR, f = 0, channels u,v every step", "[scene]") {
+  impact::Scene s = parse(kBase);
+  CHECK(s.source == "scene.toml");
+  CHECK(s.initial.u == 5.0);
+  CHECK(s.initial.v == -1.0);
+  CHECK(s.model.phi == 0.0);
+  CHECK_FALSE(s.model.cor.has_value());
+  CHECK(s.model.f == 0.0);
+  CHECK(s.T == 10.0);
+  CHECK(s.grid.h == 0.001);
+  CHECK(s.grid.steps == 10000);
+  CHECK(s.method == "direct");
+  CHECK(s.output.channels == std::vector<Channel>{Channel::u, Channel::v});
+  CHECK(s.output.every == 1);
+}
+
+TEST_CASE("scene: every table given is read", "[scene]") {
+  impact::Scene s = parse(
+      "[initial]\nu0 = 2.5\nv0 = 0.5\n"
+      "[floor]\nphi = 1.0\ncor = 0.75\n"
+      "[force]\nf = -9.80665\n" +
+      kTime +
+      "[method]\nname = \"fb_newton\"\nepsilon = 1e-12\nmax_iterations = 20\n"
+      "[output]\nchannels = [\"E\", \"iterations\", \"u\"]\nevery = 10\n");
+  CHECK(s.initial.u == 2.5);
+  CHECK(s.initial.v == 0.5);
+  CHECK(s.model.phi == 1.0);
+  REQUIRE(s.model.cor.has_value());
+  CHECK(*s.model.cor == 0.75);
+  CHECK(s.model.f == -9.80665);
+  CHECK(s.method == "fb_newton");
+  CHECK(s.method_params["epsilon"].value<double>() == 1e-12);
+  CHECK(s.output.channels == std::vector<Channel>{Channel::E, Channel::iterations, Channel::u});
+  CHECK(s.output.every == 10);
+}
+
+TEST_CASE("scene: the experiment scenes load", "[scene]") {
+  const std::string dir = std::string(IMPACT_SOURCE_DIR) + "/experiments/";
+  for (const char* name : {"figure3/no_cor.toml", "figure3/cor075.toml", "figure4/no_cor.toml",
+                           "figure4/cor075.toml"}) {
+    INFO(name);
+    impact::Scene s = impact::load_scene(dir + name);
+    CHECK(s.source == dir + name);
+    CHECK(s.grid.steps == 10000);
+    CHECK(s.method == "direct");
+    CHECK(s.output.channels ==
+          std::vector<Channel>{Channel::u, Channel::v, Channel::N, Channel::E});
+  }
+  impact::Scene s = impact::load_scene(dir + "figure4/cor075.toml");
+  CHECK(s.model.f == -9.80665);
+  CHECK(s.model.cor == 0.75);
+}
+
+TEST_CASE("scene: integers are accepted where numbers are expected", "[scene]") {
+  impact::Scene s = parse(
+      "[initial]\nu0 = 5\nv0 = -1\n[floor]\nphi = 1\ncor = 1\n[force]\nf = 0\n"
+      "[time]\nT = 10\nh = 1\n" +
+      kDirect);
+  CHECK(s.initial.u == 5.0);
+  CHECK(s.initial.v == -1.0);
+  CHECK(s.model.phi == 1.0);
+  CHECK(s.model.cor == 1.0);
+  CHECK(s.T == 10.0);
+  CHECK(s.grid.h == 1.0);
+  CHECK(s.grid.steps == 10);
+  // Integer method keys, too (fb_newton's epsilon is a number).
+  CHECK(parse(with_method("[method]\nname = \"fb_newton\"\nepsilon = 1\n")).method == "fb_newton");
+}
+
+TEST_CASE("scene: steps is T/h rounded when within 1e-9 relative, else ceil(T/h)", "[scene]") {
+  auto steps = [](const std::string& T, const std::string& h) {
+    return parse(kInitial + "[time]\nT = " + T + "\nh = " + h + "\n" + kDirect).grid.steps;
+  };
+  CHECK(steps("10.0", "0.001") == 10000);
+  CHECK(steps("0.3", "0.1") == 3);  // 0.3/0.1 = 2.9999999999999996 in doubles: rounded, not 2 or 4
+  CHECK(steps("1.0", "1.0") == 1);  // h = T: one step
+  // T not a multiple of h: the grid is extended to cover T, so the last time l h is past T.
+  CHECK(steps("10.0", "0.3") == 34);        // 33.33...: the last row is at t = 10.2
+  CHECK(steps("1.0505", "0.001") == 1051);  // 1050.5
+  CHECK(steps("1.0", "0.7") == 2);          // last time 1.4
+}
+
+TEST_CASE("scene: unknown tables and keys are rejected with the allowed names", "[scene]") {
+  CHECK_SCENE_ERROR(parse(kBase + "[flor]\ncor = 0.5\n"),
+                    Contains("scene.toml") && Contains("flor") && Contains("unknown table") &&
+                        Contains("initial, floor, force, time, method, output"));
+  CHECK_SCENE_ERROR(parse(kInitial + "[time]\nT = 10.0\nh = 0.001\nhh = 0.1\n" + kDirect),
+                    Contains("scene.toml") && Contains("time.hh") && Contains("0.1") &&
+                        Contains("unknown key") && Contains("T, h"));
+  CHECK_SCENE_ERROR(parse("[initial]\nu0 = 5.0\nv0 = -1.0\nu = 1.0\n" + kTime + kDirect),
+                    Contains("scene.toml") && Contains("initial.u ") && Contains("u0, v0"));
+  CHECK_SCENE_ERROR(parse(kBase + "[floor]\nphi = 0.0\nCOR = 0.5\n"),
+                    Contains("floor.COR") && Contains("0.5") && Contains("phi, cor"));
+  CHECK_SCENE_ERROR(parse(kBase + "[force]\ng = -9.8\n"),
+                    Contains("force.g") && Contains("-9.8") && Contains("allowed in [force]: f"));
+  CHECK_SCENE_ERROR(parse(kBase + "[output]\nchannel = [\"u\"]\n"),
+                    Contains("output.channel") && Contains("channels, every"));
+  // A table name used as a key (not a table).
+  CHECK_SCENE_ERROR(parse("time = 1.0\n" + kInitial + kDirect),
+                    Contains("scene.toml") && Contains("time") && Contains("must be a table"));
+}
+
+TEST_CASE("scene: values of the wrong type are rejected", "[scene]") {
+  CHECK_SCENE_ERROR(parse(kInitial + "[time]\nT = \"10\"\nh = 0.001\n" + kDirect),
+                    Contains("scene.toml") && Contains("time.T") && Contains("'10'") &&
+                        Contains("must be a number"));
+  CHECK_SCENE_ERROR(parse("[initial]\nu0 = true\nv0 = -1.0\n" + kTime + kDirect),
+                    Contains("initial.u0") && Contains("true") && Contains("must be a number"));
+  CHECK_SCENE_ERROR(parse("[initial]\nu0 = [5.0]\nv0 = -1.0\n" + kTime + kDirect),
+                    Contains("initial.u0") && Contains("must be a number"));
+  CHECK_SCENE_ERROR(parse(kBase + "[floor]\ncor = \"0.75\"\n"),
+                    Contains("floor.cor") && Contains("'0.75'") && Contains("must be a number"));
+  CHECK_SCENE_ERROR(parse(kBase + "[force]\nf = \"gravity\"\n"),
+                    Contains("force.f") && Contains("'gravity'") && Contains("must be a number"));
+  CHECK_SCENE_ERROR(parse(kInitial + kTime + "[method]\nname = 3\n"),
+                    Contains("method.name") && Contains("3") && Contains("must be a string"));
+  CHECK_SCENE_ERROR(parse(with_method("[method]\nname = \"fb_newton\"\nepsilon = \"small\"\n")),
+                    Contains("scene.toml") && Contains("method.epsilon") && Contains("'small'") &&
+                        Contains("must be a number"));
+  CHECK_SCENE_ERROR(parse(with_method("[method]\nname = \"fb_newton\"\nmax_iterations = 2.5\n")),
+                    Contains("method.max_iterations") && Contains("2.5") &&
+                        Contains("must be an integer in [1, "));
+  CHECK_SCENE_ERROR(parse(kBase + "[output]\nevery = 1.5\n"),
+                    Contains("output.every") && Contains("1.5") && Contains("integer >= 1"));
+  CHECK_SCENE_ERROR(
+      parse(kBase + "[output]\nchannels = \"u\"\n"),
+      Contains("output.channels = 'u'") && Contains("non-empty array of channel names"));
+  CHECK_SCENE_ERROR(
+      parse(kBase + "[output]\nchannels = [1]\n"),
+      Contains("output.channels") && Contains("1") && Contains("allowed: u, v, N, E"));
+}
+
+TEST_CASE("scene: non-finite numbers are rejected", "[scene]") {
+  CHECK_SCENE_ERROR(parse(kInitial + "[time]\nT = inf\nh = 0.001\n" + kDirect),
+                    Contains("scene.toml") && Contains("time.T = inf") && Contains("finite"));
+  CHECK_SCENE_ERROR(parse("[initial]\nu0 = nan\nv0 = -1.0\n" + kTime + kDirect),
+                    Contains("initial.u0 = nan") && Contains("finite"));
+  CHECK_SCENE_ERROR(parse("[initial]\nu0 = 5.0\nv0 = -inf\n" + kTime + kDirect),
+                    Contains("initial.v0 = -inf") && Contains("finite"));
+  CHECK_SCENE_ERROR(parse(kBase + "[force]\nf = -inf\n"),
+                    Contains("force.f = -inf") && Contains("finite"));
+  CHECK_SCENE_ERROR(parse(kBase + "[floor]\ncor = nan\n"),
+                    Contains("floor.cor = nan") && Contains("finite"));
+  CHECK_SCENE_ERROR(parse(kInitial + "[time]\nT = 10.0\nh = nan\n" + kDirect),
+                    Contains("time.h = nan") && Contains("finite"));
+  CHECK_SCENE_ERROR(parse(with_method("[method]\nname = \"moreau_jean\"\ntheta = nan\n")),
+                    Contains("method.theta = nan") && Contains("[0, 1]"));
+}
+
+TEST_CASE("scene: the time grid must be positive, h <= T, and T/h countable", "[scene]") {
+  auto time = [](const std::string& T, const std::string& h) {
+    return parse(kInitial + "[time]\nT = " + T + "\nh = " + h + "\n" + kDirect);
+  };
+  CHECK_SCENE_ERROR(time("10.0", "0.0"),
+                    Contains("scene.toml") && Contains("time.h = 0: must be > 0"));
+  CHECK_SCENE_ERROR(time("10.0", "-0.001"), Contains("time.h = -0.001") && Contains("must be > 0"));
+  CHECK_SCENE_ERROR(time("0.0", "0.001"),
+                    Contains("scene.toml") && Contains("time.T = 0: must be > 0"));
+  CHECK_SCENE_ERROR(time("-1", "0.001"), Contains("time.T = -1") && Contains("must be > 0"));
+  CHECK_SCENE_ERROR(time("1.0", "2.0"),
+                    Contains("scene.toml") && Contains("time.h = 2: must be <= time.T = 1"));
+  // 1e17 steps: l h is no longer exact in doubles.
+  CHECK_SCENE_ERROR(time("1e10", "1e-7"), Contains("scene.toml") && Contains("time.h = 1e-07") &&
+                                              Contains("too many") && Contains("2^53"));
+  // 2^53 steps exactly is the limit, and is accepted (counted, never run here).
+  CHECK(time("9007199254740992.0", "1.0").grid.steps == 9007199254740992LL);
+  CHECK_SCENE_ERROR(time("18014398509481984.0", "1.0"), Contains("time.h") && Contains("2^53"));
+  // Missing keys.
+  CHECK_SCENE_ERROR(parse(kInitial + "[time]\nh = 0.001\n" + kDirect),
+                    Contains("scene.toml") && Contains("time.T") && Contains("required key"));
+  CHECK_SCENE_ERROR(parse(kInitial + "[time]\nT = 10.0\n" + kDirect),
+                    Contains("time.h") && Contains("required key"));
+}
+
+TEST_CASE("scene: initial data, floor and force are range-checked", "[scene]") {
+  CHECK_SCENE_ERROR(parse("[initial]\nu0 = -0.5\nv0 = 0.0\n" + kTime + kDirect),
+                    Contains("scene.toml") && Contains("initial.u0 = -0.5") &&
+                        Contains("must be >= floor.phi = 0 "));
+  CHECK_SCENE_ERROR(parse(kBase + "[floor]\nphi = 5.5\n"),
+                    Contains("initial.u0 = 5: must be >= floor.phi = 5.5"));
+  // The floor's value is shown as given, not rounded to 6 decimals.
+  CHECK_SCENE_ERROR(
+      parse("[initial]\nu0 = 1e-8\nv0 = 0.0\n[floor]\nphi = 2.5e-7\n" + kTime + kDirect),
+      Contains("initial.u0 = 1e-08") && Contains("floor.phi = 2.5e-07"));
+  // u0 = phi (starting on the floor) is allowed.
+  CHECK(parse("[initial]\nu0 = 1.0\nv0 = 0.0\n[floor]\nphi = 1.0\n" + kTime + kDirect).initial.u ==
+        1.0);
+
+  CHECK_SCENE_ERROR(parse(kBase + "[floor]\ncor = 1.5\n"), Contains("scene.toml") &&
+                                                               Contains("floor.cor = 1.5") &&
+                                                               Contains("must be in [0, 1]"));
+  CHECK_SCENE_ERROR(parse(kBase + "[floor]\ncor = -0.25\n"),
+                    Contains("floor.cor = -0.25") && Contains("must be in [0, 1]"));
+  CHECK(parse(kBase + "[floor]\ncor = 0.0\n").model.cor == 0.0);
+  CHECK(parse(kBase + "[floor]\ncor = 1.0\n").model.cor == 1.0);
+
+  CHECK_SCENE_ERROR(parse(kBase + "[force]\n"), Contains("force.f") && Contains("required key"));
+}
+
+TEST_CASE("scene: missing required tables and keys", "[scene]") {
+  CHECK_SCENE_ERROR(parse(kTime + kDirect),
+                    Contains("scene.toml") && Contains("[initial]") && Contains("required table"));
+  CHECK_SCENE_ERROR(parse(kInitial + kDirect), Contains("[time]") && Contains("required table"));
+  CHECK_SCENE_ERROR(parse(kInitial + kTime), Contains("[method]") && Contains("required table"));
+  CHECK_SCENE_ERROR(parse("[initial]\nv0 = -1.0\n" + kTime + kDirect),
+                    Contains("scene.toml") && Contains("initial.u0") && Contains("required key"));
+  CHECK_SCENE_ERROR(parse("[initial]\nu0 = 5.0\n" + kTime + kDirect),
+                    Contains("initial.v0") && Contains("required key"));
+  CHECK_SCENE_ERROR(parse(kInitial + kTime + "[method]\n"),
+                    Contains("scene.toml") && Contains("method.name") && Contains("required key"));
+  CHECK_SCENE_ERROR(parse(""), Contains("scene.toml") && Contains("[initial]"));
+}
+
+TEST_CASE("scene: the method and its keys are checked", "[scene]") {
+  CHECK_SCENE_ERROR(parse(with_method("[method]\nname = \"newton\"\n")),
+                    Contains("scene.toml") && Contains("method.name = 'newton'") &&
+                        Contains("unknown method") &&
+                        Contains("direct, fb_newton, moreau_jean, penalty, exact"));
+  // A key the method does not use (theta is moreau_jean's).
+  CHECK_SCENE_ERROR(parse(with_method("[method]\nname = \"direct\"\ntheta = 0.5\n")),
+                    Contains("scene.toml") && Contains("method.theta = 0.5") &&
+                        Contains("unknown key for method 'direct'") && Contains("allowed: name)"));
+  CHECK_SCENE_ERROR(
+      parse(with_method("[method]\nname = \"fb_newton\"\nepsilom = 1e-12\n")),
+      Contains("method.epsilom") && Contains("allowed: name, epsilon, tolerance, max_iterations"));
+  CHECK(parse(with_method("[method]\nname = \"moreau_jean\"\ntheta = 0.5\n")).method ==
+        "moreau_jean");
+
+  // fb_newton ranges.
+  CHECK_SCENE_ERROR(parse(with_method("[method]\nname = \"fb_newton\"\nepsilon = 0.0\n")),
+                    Contains("scene.toml") && Contains("method.epsilon = 0: must be in (0, 1]") &&
+                        Contains("must be in (0, 1]"));
+  CHECK_SCENE_ERROR(parse(with_method("[method]\nname = \"fb_newton\"\nepsilon = -1e-15\n")),
+                    Contains("method.epsilon = -1e-15") && Contains("must be in (0, 1]"));
+  CHECK_SCENE_ERROR(parse(with_method("[method]\nname = \"fb_newton\"\ntolerance = 0.0\n")),
+                    Contains("method.tolerance = 0:") && Contains("must be in (0, 0.1]"));
+  CHECK_SCENE_ERROR(parse(with_method("[method]\nname = \"fb_newton\"\nmax_iterations = 0\n")),
+                    Contains("method.max_iterations = 0") && Contains("[1, 10000]"));
+  CHECK_SCENE_ERROR(parse(with_method("[method]\nname = \"moreau_jean\"\ntheta = 1.5\n")),
+                    Contains("method.theta = 1.5") && Contains("must be in [0, 1]"));
+
+  // penalty ranges and stepper names.
+  CHECK(parse(with_method("[method]\nname = \"penalty\"\nstiffness = 1e7\n")).method == "penalty");
+  CHECK_SCENE_ERROR(
+      parse(with_method("[method]\nname = \"penalty\"\nstiffness = 0.0\n")),
+      Contains("scene.toml") && Contains("method.stiffness = 0:") && Contains("must be in (0, "));
+  CHECK_SCENE_ERROR(parse(with_method("[method]\nname = \"penalty\"\nstiffness = -1e6\n")),
+                    Contains("method.stiffness = -1e+06") && Contains("must be in (0, "));
+  CHECK_SCENE_ERROR(parse(with_method("[method]\nname = \"penalty\"\nstepper = \"euler\"\n")),
+                    Contains("scene.toml") && Contains("method.stepper = 'euler'") &&
+                        Contains("must be one of") && Contains("rk8pd"));
+}
+
+TEST_CASE("scene: output channels and decimation are checked", "[scene]") {
+  CHECK_SCENE_ERROR(parse(kBase + "[output]\nchannels = [\"u\", \"iterations\"]\n"),
+                    Contains("scene.toml") && Contains("output.channels = 'iterations'") &&
+                        Contains("method 'direct'") && Contains("allowed: u, v, N, E)"));
+  CHECK_SCENE_ERROR(parse(kBase + "[output]\nchannels = [\"u\", \"w\"]\n"),
+                    Contains("output.channels = 'w'") && Contains("allowed: u, v, N, E)"));
+  CHECK_SCENE_ERROR(
+      parse(kBase + "[output]\nchannels = [\"u\", \"v\", \"u\"]\n"),
+      Contains("scene.toml") && Contains("output.channels = 'u'") && Contains("listed twice"));
+  CHECK_SCENE_ERROR(parse(kBase + "[output]\nchannels = []\n"),
+                    Contains("output.channels") && Contains("non-empty"));
+  CHECK_SCENE_ERROR(parse(kBase + "[output]\nevery = 0\n"), Contains("scene.toml") &&
+                                                                Contains("output.every = 0") &&
+                                                                Contains("integer >= 1"));
+  CHECK_SCENE_ERROR(parse(kBase + "[output]\nevery = -5\n"),
+                    Contains("output.every = -5") && Contains("integer >= 1"));
+  // iterations is fine for a method that counts them.
+  impact::Scene s = parse(with_method("[method]\nname = \"fb_newton\"\n") +
+                          "[output]\nchannels = [\"iterations\"]\n");
+  CHECK(s.output.channels == std::vector<Channel>{Channel::iterations});
+  CHECK(s.output.every == 1);
+  // [output] with only `every` keeps the default channels.
+  s = parse(kBase + "[output]\nevery = 100\n");
+  CHECK(s.output.channels == std::vector<Channel>{Channel::u, Channel::v});
+  CHECK(s.output.every == 100);
+}
+
+TEST_CASE("scene: --set overrides and adds keys before validation", "[scene]") {
+  impact::Scene s = parse(kBase, {"time.h=1e-4"});
+  CHECK(s.grid.h == 1e-4);
+  CHECK(s.grid.steps == 100000);
+  CHECK(s.document["time"]["h"].value<double>() == 1e-4);  // the document is what ran
+
+  s = parse(kBase, {"floor.cor=0.5"});
+  CHECK(s.model.cor == 0.5);
+  CHECK(s.document["floor"]["cor"].value<double>() == 0.5);
+
+  s = parse(kBase, {"method.name=exact"});  // a bare word is read as a string
+  CHECK(s.method == "exact");
+  s = parse(kBase, {"method.name=\"moreau_jean\"", "method.theta=1"});
+  CHECK(s.method == "moreau_jean");
+  s = parse(kBase, {"output.channels=[\"u\", \"E\"]", "output.every=10", "time.T=1"});
+  CHECK(s.output.channels == std::vector<Channel>{Channel::u, Channel::E});
+  CHECK(s.output.every == 10);
+  CHECK(s.grid.steps == 1000);
+  s = parse(kBase, {"time.h=0.5", "time.h=0.25"});  // the last one wins
+  CHECK(s.grid.h == 0.25);
+
+  // An override is validated like the file.
+  CHECK_SCENE_ERROR(parse(kBase, {"time.h=-1"}),
+                    Contains("scene.toml") && Contains("time.h = -1") && Contains("must be > 0"));
+  CHECK_SCENE_ERROR(parse(kBase, {"floor.cor=2"}),
+                    Contains("floor.cor = 2") && Contains("must be in [0, 1]"));
+  CHECK_SCENE_ERROR(parse(kBase, {"time.hh=0.1"}),
+                    Contains("time.hh") && Contains("unknown key") && Contains("T, h"));
+  CHECK_SCENE_ERROR(parse(kBase, {"floor.cor=high"}),  // a bare word is a string, not a number
+                    Contains("floor.cor = 'high'") && Contains("must be a number"));
+  CHECK_SCENE_ERROR(parse(kBase, {"method.name=rk4"}),
+                    Contains("method.name = 'rk4'") && Contains("unknown method"));
+
+  // Malformed overrides.
+  CHECK_SCENE_ERROR(parse(kBase, {"time.h"}), Contains("scene.toml") && Contains("--set time.h") &&
+                                                  Contains("expected table.key=value"));
+  CHECK_SCENE_ERROR(parse(kBase, {"h=0.1"}),
+                    Contains("--set h=0.1") && Contains("the key must be table.key"));
+  CHECK_SCENE_ERROR(parse(kBase, {".h=0.1"}), Contains("the key must be table.key"));
+  CHECK_SCENE_ERROR(parse(kBase, {"time.=0.1"}), Contains("the key must be table.key"));
+  CHECK_SCENE_ERROR(parse(kBase, {"a.b.c=1"}), Contains("the key must be table.key"));
+  CHECK_SCENE_ERROR(parse(kBase, {"output.channels=[1,"}),
+                    Contains("scene.toml") && Contains("--set output.channels=[1,") &&
+                        Contains("'[1,' is not a TOML value"));
+  CHECK_SCENE_ERROR(parse(kBase, {"time.h="}),
+                    Contains("--set time.h=") && Contains("is not a TOML value"));
+  CHECK_SCENE_ERROR(parse("x = 1\n" + kBase, {"x.y=1"}),
+                    Contains("--set x.y=1") && Contains("[x] is not a table"));
+  // An override that adds an unknown table is rejected as in a file.
+  CHECK_SCENE_ERROR(parse(kBase, {"flor.cor=0.5"}), Contains("flor") && Contains("unknown table"));
+}
+
+TEST_CASE("scene: load_scene names the path of a missing or invalid file", "[scene]") {
+  TempDir dir;
+  const std::string missing = dir.path + "/no_such_scene.toml";
+  CHECK_SCENE_ERROR(impact::load_scene(missing), Contains(missing));
+
+  const std::string broken = dir.write("broken.toml", kBase + "[output\nevery = 1\n");
+  CHECK_SCENE_ERROR(impact::load_scene(broken),
+                    Contains(broken) && Contains("not a valid TOML scene"));
+  CHECK_SCENE_ERROR(parse(kBase + "[output\n"),
+                    Contains("scene.toml") && Contains("not a valid TOML scene"));
+
+  // A valid file: errors name its path, and overrides apply.
+  const std::string good = dir.write("good.toml", kBase);
+  CHECK(impact::load_scene(good).grid.steps == 10000);
+  CHECK(impact::load_scene(good, {"time.T=1"}).grid.steps == 1000);
+  CHECK_SCENE_ERROR(impact::load_scene(good, {"time.T=0"}),
+                    Contains(good) && Contains("time.T = 0") && Contains("must be > 0"));
+}
