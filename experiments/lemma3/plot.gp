@@ -1,0 +1,66 @@
+# Lemma 3 (Section 4): measured / bound for the 144 runs of the sweep (direct scheme, no COR,
+# phi = 0, T = 2 s), ordered by f, then u0, then v0, then h (colour). A ratio above 1 breaks the
+# bound; a ratio of exactly 0 is drawn at the bottom of the axis.
+# Usage: gnuplot -e "results='results/lemma3'" experiments/lemma3/plot.gp
+if (!exists("results")) results = 'results/lemma3'
+set datafile separator ','
+file = results.'/runs.csv'
+
+hs = "0.1 0.01 0.001 0.0001"
+colors = "#1b9e77 #d95f02 #7570b3 #e7298a"
+is_h(h, k) = abs(h - word(hs, k) + 0) < 1e-12
+at_least(x) = x < 1e-10 ? 1e-10 : x
+pick(h, k, y) = is_h(h, k) ? y : NaN
+
+do for [format in "png svg"] {
+  if (format eq "png") {
+    set terminal pngcairo size 1200,900 font ",10"
+    set output 'figures/lemma3.png'
+  } else {
+    set terminal svg size 1200,900 font ",10" dynamic
+    set output 'figures/lemma3.svg'
+  }
+  set multiplot layout 2,2 title "Lemma 3: measured / bound over 4 h x 4 f x 3 u_0 x 3 v_0 = 144 runs (direct scheme, T = 2 s)"
+  set grid
+  set xrange [0:145]
+  set xtics ("f = -9.80665 m/s^2" 18.5, "f = -1" 54.5, "f = 0" 90.5, "f = +1" 126.5)
+  set arrow 1 from 36.5, graph 0 to 36.5, graph 1 nohead lc rgb "gray"
+  set arrow 2 from 72.5, graph 0 to 72.5, graph 1 nohead lc rgb "gray"
+  set arrow 3 from 108.5, graph 0 to 108.5, graph 1 nohead lc rgb "gray"
+  set xlabel "run (within each f: u_0 = 0, 1, 5 m; v_0 = -3, -0.5, 2 m/s; h)"
+  set logscale y 10
+  set format y "10^{%L}"
+  set yrange [1e-10:10]
+  set key bottom right box opaque
+
+  set ylabel "max_l |v^l| / V"
+  set title "(a) velocity: V = sqrt((2E^0 + 2|f||u^0| + |f|T)(1 + |f|T e^{|f|T}))"
+  plot for [k=1:4] file using 1:(pick($2, k, at_least($15))) with points pt 7 ps 0.8 \
+         lc rgb word(colors, k) title "h = ".word(hs, k)." s", \
+       1 with lines lc rgb "black" lw 1.5 dt 2 title "bound"
+
+  set ylabel "max_l |u^l| / bound"
+  set title "(b) displacement: filled |u^0| + (T/2) V (printed), open |u^0| + T V (corrected)"
+  plot for [k=1:4] file using 1:(pick($2, k, at_least($16))) with points pt 7 ps 0.8 \
+         lc rgb word(colors, k) title "h = ".word(hs, k)." s, printed", \
+       for [k=1:4] file using 1:(pick($2, k, at_least($17))) with points pt 6 ps 1.2 \
+         lc rgb word(colors, k) notitle, \
+       1 with lines lc rgb "black" lw 1.5 dt 2 title "bound"
+
+  set ylabel "h sum_l N^l / (V - v^0)"
+  set title "(c) total impulse: the claim after (4-9), h sum N^l <= V - v^0 (0 drawn at 10^{-10})"
+  plot for [k=1:4] file using 1:(pick($2, k, at_least($18))) with points pt 7 ps 0.8 \
+         lc rgb word(colors, k) title "h = ".word(hs, k)." s", \
+       1 with lines lc rgb "black" lw 1.5 dt 2 title "bound"
+
+  unset logscale y
+  set format y "% h"
+  set yrange [-0.05:1.1]
+  set key center right
+  set ylabel "max_l (E^{l+1} - E^l) / round-off tolerance"
+  set title "(d) energy inequality E^{l+1} <= E^l (4-6): largest increase per run"
+  plot for [k=1:4] file using 1:(pick($2, k, $21 > 0 ? $21 : 0)) with points pt 7 ps 0.8 \
+         lc rgb word(colors, k) title "h = ".word(hs, k)." s", \
+       1 with lines lc rgb "black" lw 1.5 dt 2 title "tolerance"
+  unset multiplot
+}

@@ -1,0 +1,286 @@
+#include "impact/laplace.hpp"
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_integration.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "impact/registry.hpp"
+#include "impact/run.hpp"
+#include "impact/scene.hpp"
+
+namespace impact {
+
+namespace {
+
+// Relative accuracy asked of each piece. GK21 on a piece where w is smooth meets it with one or
+// two subdivisions; the pieces of the sampled interpolants are a line times e^{-sr}, integrated to
+// round-off by one rule.
+constexpr double kEpsRel = 1e-12;
+constexpr std::size_t kLimit = 200;
+// Beyond s t = 60 a bounded w contributes less than e^{-60} / s ~ 1e-26 / s times its size.
+constexpr double kNegligibleExponent = 60.0;
+// Impacts taken as breakpoints of the exact energy: a Zeno sequence with e <= 0.9 has lost all
+// but e^1000 < 1e-45 of its speed after 500 impacts.
+constexpr std::int64_t kMaxBreakpoints = 500;
+
+// Turns GSL's abort-on-error handler off while a transform runs and restores the previous one, so
+// that a failure becomes an exception and the process-wide setting is left as it was.
+class GslErrorsAsStatus {
+ public:
+  GslErrorsAsStatus() : previous_(gsl_set_error_handler_off()) {}
+  GslErrorsAsStatus(const GslErrorsAsStatus&) = delete;
+  GslErrorsAsStatus& operator=(const GslErrorsAsStatus&) = delete;
+  ~GslErrorsAsStatus() { gsl_set_error_handler(previous_); }
+
+ private:
+  gsl_error_handler_t* previous_;
+};
+
+// GSL_EROUND means that round-off stopped the refinement before kEpsRel was met: the result is then
+// as good as double precision allows and its error estimate is reported in abserr, so it is kept.
+void check_gsl(int status, const char* what) {
+  if (status != GSL_SUCCESS && status != GSL_EROUND)
+    throw std::runtime_error(std::string("laplace_transform: ") + what + ": " +
+                             gsl_strerror(status));
+}
+
+struct WorkspaceDeleter {
+  void operator()(gsl_integration_workspace* w) const { gsl_integration_workspace_free(w); }
+};
+using Workspace = std::unique_ptr<gsl_integration_workspace, WorkspaceDeleter>;
+
+Workspace make_workspace() {
+  Workspace w(gsl_integration_workspace_alloc(kLimit));
+  if (!w) throw std::runtime_error("laplace_transform: gsl_integration_workspace_alloc failed");
+  return w;
+}
+
+void check_arguments(double s) {
+  if (!(s > 0) || !std::isfinite(s))
+    throw std::invalid_argument("laplace_transform needs a finite s > 0, got " + std::to_string(s));
+}
+
+// Neumaier's compensated sum: a transform of 40000 samples adds 40000 pieces, whose plain sum
+// would carry ~sqrt(40000) eps = 2e-14 of accumulated rounding, above the quadrature's own error.
+class CompensatedSum {
+ public:
+  void add(double x) {
+    const double t = sum_ + x;
+    compensation_ += std::fabs(sum_) >= std::fabs(x) ? (sum_ - t) + x : (x - t) + sum_;
+    sum_ = t;
+  }
+  double value() const { return sum_ + compensation_; }
+
+ private:
+  double sum_ = 0, compensation_ = 0;
+};
+
+// The integrand of one piece in the local time r = t - a: w(a + r) e^{-sr}. The factor e^{-sa} is
+// applied to the piece's integral, so that every piece is integrated to a relative accuracy.
+struct Shifted {
+  const std::function<double(double)>* w;
+  double a, s;
+  static double eval(double r, void* p) {
+    const auto& x = *static_cast<const Shifted*>(p);
+    const double decay = std::exp(-x.s * r);
+    return decay == 0.0 ? 0.0 : (*x.w)(x.a + r) * decay;
+  }
+};
+
+// The interpolant on one step in the local time r in [0, h]: w0 + slope r, times e^{-sr}.
+struct Line {
+  double w0, slope, s;
+  static double eval(double r, void* p) {
+    const auto& x = *static_cast<const Line*>(p);
+    return (x.w0 + x.slope * r) * std::exp(-x.s * r);
+  }
+};
+
+}  // namespace
+
+LaplaceValue laplace_transform(const std::function<double(double)>& w,
+                               std::vector<double> breakpoints, double s) {
+  check_arguments(s);
+  std::erase_if(breakpoints, [](double b) { return !(b > 0) || !std::isfinite(b); });
+  std::sort(breakpoints.begin(), breakpoints.end());
+  breakpoints.erase(std::unique(breakpoints.begin(), breakpoints.end()), breakpoints.end());
+
+  GslErrorsAsStatus errors_as_status;
+  Workspace workspace = make_workspace();
+  LaplaceValue out;
+  CompensatedSum value;
+  // Each piece is integrated in its local time and scaled by e^{-sa}; it is asked for kEpsRel
+  // relative to its own size or to what the earlier pieces add up to, whichever is less strict,
+  // so that a late piece worth e^{-50} of the total costs no more than its share.
+  auto integrate = [&](double a, double b) {
+    const double scale = std::exp(-s * a);
+    if (scale == 0.0) return false;  // this piece and all later ones underflow
+    Shifted piece{&w, a, s};
+    gsl_function F{&Shifted::eval, &piece};
+    const double epsabs = kEpsRel * std::fabs(value.value()) / scale;
+    double result = 0, abserr = 0;
+    const std::string where = "on [" + std::to_string(a) + ", " + std::to_string(b) + "]";
+    if (std::isinf(b))
+      check_gsl(gsl_integration_qagiu(&F, 0.0, epsabs, kEpsRel, kLimit, workspace.get(), &result,
+                                      &abserr),
+                ("gsl_integration_qagiu " + where).c_str());
+    else
+      check_gsl(gsl_integration_qag(&F, 0.0, b - a, epsabs, kEpsRel, kLimit, GSL_INTEG_GAUSS21,
+                                    workspace.get(), &result, &abserr),
+                ("gsl_integration_qag " + where).c_str());
+    value.add(scale * result);
+    out.abserr += scale * abserr;
+    return true;
+  };
+  double a = 0.0;
+  bool more = true;
+  for (double b : breakpoints) {
+    more = integrate(a, b);
+    if (!more) break;
+    a = b;
+  }
+  if (more) integrate(a, std::numeric_limits<double>::infinity());
+  out.value = value.value();
+  return out;
+}
+
+LaplaceValue laplace_transform_samples(std::span<const double> samples, double h,
+                                       Interpolation interpolation, double s, double tail_sup) {
+  check_arguments(s);
+  if (!(h > 0) || samples.size() < 2)
+    throw std::invalid_argument("laplace_transform_samples needs h > 0 and two samples");
+  const std::size_t n = samples.size() - 1;
+  const auto negligible = static_cast<std::size_t>(std::ceil(kNegligibleExponent / (s * h)));
+  const std::size_t stop = std::min(n, negligible);
+
+  GslErrorsAsStatus errors_as_status;
+  Workspace workspace = make_workspace();
+  LaplaceValue out;
+  CompensatedSum value;
+  for (std::size_t l = 0; l < stop; ++l) {
+    const double w_next = samples[l + 1];
+    Line line = interpolation == Interpolation::linear
+                    ? Line{samples[l], (w_next - samples[l]) / h, s}
+                    : Line{w_next, 0.0, s};
+    gsl_function F{&Line::eval, &line};
+    double result = 0, abserr = 0;
+    // t_l = l h exactly, as on the solvers' grid (model.hpp).
+    const double scale = std::exp(-s * (static_cast<double>(l) * h));
+    const double epsabs = kEpsRel * std::fabs(value.value()) / scale;
+    check_gsl(gsl_integration_qag(&F, 0.0, h, epsabs, kEpsRel, kLimit, GSL_INTEG_GAUSS15,
+                                  workspace.get(), &result, &abserr),
+              "gsl_integration_qag");
+    value.add(scale * result);
+    out.abserr += scale * abserr;
+  }
+  out.value = value.value();
+  double sup = std::fabs(tail_sup);
+  for (std::size_t l = stop + 1; l <= n; ++l) sup = std::fmax(sup, std::fabs(samples[l]));
+  out.tail_bound = sup * std::exp(-s * (static_cast<double>(stop) * h)) / s;
+  return out;
+}
+
+double laplace_jump_signature(std::span<const Jump> jumps, double s) {
+  double sum = 0;
+  for (const Jump& j : jumps) sum += j.size * std::exp(-s * j.time);
+  return sum;
+}
+
+std::vector<Jump> exact_energy_jumps(const Model& model, const ExactSolution& exact, double horizon,
+                                     std::int64_t max_impacts) {
+  // Newton's law v+ = -e v- at impact k turns V_k^2 / 2 - f phi into e^2 V_k^2 / 2 - f phi.
+  const double e = model.cor.value_or(1.0);
+  std::vector<Jump> jumps;
+  if (e == 1.0) return jumps;
+  for (std::int64_t k = 1; k <= max_impacts; ++k) {
+    const std::optional<double> t = exact.impact_time(k);
+    if (!t || *t > horizon) break;
+    const double V = *exact.impact_speed(k);
+    jumps.push_back({*t, -0.5 * (1 - e) * (1 + e) * V * V});
+  }
+  return jumps;
+}
+
+Lemma1Point lemma1_exact(const Model& model, const State& initial, double s) {
+  const ExactSolution exact(model, initial);
+  std::vector<double> breakpoints;
+  for (std::int64_t k = 1; k <= kMaxBreakpoints; ++k) {
+    const std::optional<double> t = exact.impact_time(k);
+    if (!t) break;
+    breakpoints.push_back(*t);
+  }
+  if (auto rest = exact.rest_time()) breakpoints.push_back(*rest);
+  const std::function<double(double)> E = [&](double t) { return energy(model, exact.at(t)); };
+  const LaplaceValue L = laplace_transform(E, breakpoints, s);
+  const std::vector<Jump> jumps =
+      exact_energy_jumps(model, exact, kNegligibleExponent / s, kMaxBreakpoints);
+  const double E0 = energy(model, initial), scale = std::fabs(E0);
+  return {s, (s * L.value - E0) / scale, laplace_jump_signature(jumps, s) / scale,
+          s * L.abserr / scale, s * L.tail_bound / scale};
+}
+
+Lemma1Point lemma1_samples(std::span<const double> energies, double h, Interpolation interpolation,
+                           double s, double tail_sup) {
+  const LaplaceValue L = laplace_transform_samples(energies, h, interpolation, s, tail_sup);
+  std::vector<Jump> jumps;
+  for (std::size_t l = 0; l + 1 < energies.size(); ++l)
+    if (energies[l + 1] != energies[l])
+      jumps.push_back({static_cast<double>(l) * h, energies[l + 1] - energies[l]});
+  const double E0 = energies[0], scale = std::fabs(E0);
+  return {s, (s * L.value - E0) / scale, laplace_jump_signature(jumps, s) / scale,
+          s * L.abserr / scale, s * L.tail_bound / scale};
+}
+
+std::vector<double> energy_samples(const std::string& scene_path,
+                                   const std::vector<std::string>& overrides) {
+  const Scene scene = load_scene(scene_path, overrides);
+  AnyStepper stepper = make_stepper(scene);
+  std::vector<double> energies;
+  energies.reserve(static_cast<std::size_t>(scene.grid.steps) + 1);
+  simulate(stepper, scene.initial, scene.grid, [&](std::int64_t, const State& s, const StepInfo&) {
+    energies.push_back(energy(scene.model, s));
+  });
+  return energies;
+}
+
+std::vector<Lemma1Case> lemma1_cases() {
+  const std::string T = "time.T=" + std::to_string(kLemma1SchemeT);
+  return {
+      {"exact_f0_elastic", "figure3/no_cor.toml", {}, true},
+      {"exact_f0_cor075", "figure3/cor075.toml", {}, true},
+      {"exact_gravity_elastic", "figure4/no_cor.toml", {}, true},
+      {"exact_gravity_cor075", "figure4/cor075.toml", {}, true},
+      {"exact_gravity_plastic", "figure4/no_cor.toml", {"floor.cor=0.0"}, true},
+      {"direct_f0_no_cor", "figure3/no_cor.toml", {T}, false},
+      {"direct_f0_no_cor_h0012", "figure3/no_cor.toml", {T, "time.h=0.0012"}, false},
+      {"direct_f0_cor075", "figure3/cor075.toml", {T}, false},
+      {"direct_gravity_no_cor", "figure4/no_cor.toml", {T}, false},
+      {"direct_gravity_cor075", "figure4/cor075.toml", {T}, false},
+  };
+}
+
+std::vector<Lemma1Point> lemma1_run(const Lemma1Case& c, const std::string& source_dir,
+                                    Interpolation interpolation) {
+  const std::string path = source_dir + "/experiments/" + c.scene;
+  const Scene scene = load_scene(path, c.overrides);
+  std::vector<Lemma1Point> points;
+  if (c.exact) {
+    for (double s : kLemma1S) points.push_back(lemma1_exact(scene.model, scene.initial, s));
+    return points;
+  }
+  if (scene.model.f > 0)
+    throw std::invalid_argument("lemma1_run: no bound on E beyond T for f > 0 (" + path + ")");
+  const std::vector<double> E = energy_samples(path, c.overrides);
+  const double tail_sup = std::fmax(std::fabs(E[0]), std::fabs(scene.model.f * scene.model.phi));
+  for (double s : kLemma1S)
+    points.push_back(lemma1_samples(E, scene.grid.h, interpolation, s, tail_sup));
+  return points;
+}
+
+}  // namespace impact
