@@ -1,0 +1,115 @@
+# Figure 3 (Section 5.2, f = 0, u0 = 5 m, v0 = -1 m/s, h = 1e-3 s): left column without COR, right
+# column with COR = 0.75; rows u, v, N, E. Thick blue: direct (5-1); dashed orange: fb_newton
+# (5-3); thin black: the exact solution sampled on the same grid. N is a force per unit mass, the
+# row at t_l carries N^{l-1} (the impulse of the step ending at t_l, divided by h), drawn as
+# impulses so that the one-step spike of height 2/h is visible. Panel titles give
+# max_l |direct - fb_newton| (from labels.gp, written by exp_figure3).
+# Second figure: the energy kept by the one impact, E(T)/E(0), against h.
+# Usage: gnuplot -e "results='results/figure3'" experiments/figure3/plot.gp
+if (!exists("results")) results = 'results/figure3'
+load results.'/labels.gp'
+set datafile separator ','
+csv(scene, method) = sprintf('%s/%s_%s.csv', results, scene, method)
+
+blue = "#0072B2"
+orange = "#E69F00"
+
+do for [format in "png svg"] {
+  if (format eq "png") {
+    set terminal pngcairo size 1200,1300 font ",10"
+    set output 'figures/figure3.png'
+  } else {
+    set terminal svg size 1200,1300 font ",10" dynamic
+    set output 'figures/figure3.svg'
+  }
+  set multiplot layout 4,2 columnsfirst title \
+      "Figure 3: f = 0, u_0 = 5 m, v_0 = -1 m/s, h = 10^{-3} s; direct vs fb\\_newton vs exact"
+  set grid
+  set xrange [0:10]
+  set xtics 1
+  set key top right box opaque noenhanced
+
+  do for [scene in "no_cor cor075"] {
+    label = (scene eq "no_cor") ? "no COR" : "COR = 0.75"
+    du = value('diff_'.scene.'_u'); dv = value('diff_'.scene.'_v')
+    dN = value('diff_'.scene.'_N'); dE = value('diff_'.scene.'_E')
+
+    set title sprintf("%s: displacement, max|direct - fb\\_newton| = %.2g m", label, du)
+    set ylabel "u(t) [m]"
+    set yrange [-0.3:6]
+    set key top center
+    set xlabel "t [s]"
+    plot csv(scene, 'direct') skip 1 using 1:2 with lines lw 3 lc rgb blue title "direct", \
+         csv(scene, 'fb_newton') skip 1 using 1:2 with lines lw 2 dt 2 lc rgb orange \
+           title "fb_newton", \
+         csv(scene, 'exact') skip 1 using 1:2 with lines lw 1 lc rgb "black" title "exact"
+
+    set title sprintf("%s: velocity, max|direct - fb\\_newton| = %.2g m/s", label, dv)
+    set ylabel "v(t) [m/s]"
+    set yrange [-1.3:1.3]
+    set key bottom right
+    plot csv(scene, 'direct') skip 1 using 1:3 with lines lw 3 lc rgb blue title "direct", \
+         csv(scene, 'fb_newton') skip 1 using 1:3 with lines lw 2 dt 2 lc rgb orange \
+           title "fb_newton", \
+         csv(scene, 'exact') skip 1 using 1:3 with lines lw 1 lc rgb "black" title "exact"
+
+    set title sprintf("%s: contact force, max|direct - fb\\_newton| = %.2g m/s^2", label, dN)
+    set ylabel "N(t) [m/s^2]"
+    set yrange [0:2300]
+    set key top right
+    if (scene eq "cor075") {
+      set label 1 "direct: N = 0 at every step:\nthe COR reverses v already in\nthe step landing exactly on\nphi (u^5000 = 0, N^4999 = 0)" \
+          at 0.3, 1500 left noenhanced
+    }
+    plot csv(scene, 'direct') skip 1 using 1:4 with impulses lw 3 lc rgb blue title "direct", \
+         csv(scene, 'fb_newton') skip 1 using 1:($4 > 0 ? $4 : NaN) with points pt 6 ps 1.2 \
+           lc rgb orange title "fb_newton (N > 0)", \
+         csv(scene, 'exact') skip 1 using 1:4 with impulses lw 1 lc rgb "black" \
+           title "exact ((1 + e) V / h)"
+    unset label 1
+
+    set title sprintf("%s: energy, max|direct - fb\\_newton| = %.2g J/kg", label, dE)
+    set ylabel "E(t) = v^2/2 - f u [J/kg]"
+    set yrange [0:0.6]
+    set key bottom left
+    plot csv(scene, 'direct') skip 1 using 1:5 with lines lw 3 lc rgb blue title "direct", \
+         csv(scene, 'fb_newton') skip 1 using 1:5 with lines lw 2 dt 2 lc rgb orange \
+           title "fb_newton", \
+         csv(scene, 'exact') skip 1 using 1:5 with lines lw 1 lc rgb "black" title "exact"
+  }
+  unset multiplot
+  set output
+}
+
+# The energy kept by the impact against h (no COR): 1 only when t* = 5 is a grid point.
+sweep = results.'/h_sweep.csv'
+do for [format in "png svg"] {
+  if (format eq "png") {
+    set terminal pngcairo size 900,500 font ",10"
+    set output 'figures/figure3_h_sweep.png'
+  } else {
+    set terminal svg size 900,500 font ",10" dynamic
+    set output 'figures/figure3_h_sweep.svg'
+  }
+  set title "Figure 3 left (f = 0, no COR): energy kept by the impact, E(T)/E(0), at 201 step sizes h"
+  set grid
+  set logscale x
+  set xrange [1e-4:1e-2]
+  set xtics auto
+  set format x "10^{%L}"
+  set yrange [-0.05:1.6]
+  set ytics 0.2
+  set xlabel "h [s]"
+  set ylabel "E(T) / E(0)"
+  set key top right box opaque noenhanced
+  set arrow 1 from 1e-3, graph 0 to 1e-3, graph 1 nohead dt 2 lc rgb "gray40"
+  set label 1 "paper's h = 10^{-3}: t* = 5 on the grid" at 0.95e-3, first 1.1 right tc rgb "gray30"
+  plot sweep skip 1 using 1:3 with points pt 6 ps 1.2 lc rgb blue title "direct", \
+       sweep skip 1 using 1:4 with points pt 2 ps 1.0 lc rgb orange title "fb_newton", \
+       sweep skip 1 using 1:5 with points pt 7 ps 0.4 lc rgb "black" \
+         title "(1 - 2 theta)^2, theta = (u^l - phi)/(h |v^l|)", \
+       1 with lines lw 1 lc rgb "black" dt 3 title "exact (elastic)"
+  unset arrow 1
+  unset label 1
+  set output
+}

@@ -1,0 +1,202 @@
+# Figure 4 (Section 5.2, f = -9.80665 m/s^2, u0 = 5 m, v0 = -1 m/s, h = 1e-3 s): left column
+# without COR, right column with COR = 0.75; rows u, v, N, E. Thick blue: direct (5-1); dashed
+# orange: fb_newton (5-3); thin black: the exact solution on the same grid (elastic without COR,
+# Zeno rest at t_inf with COR). N (a force per unit mass; the row at t_l carries N^{l-1}) is drawn
+# as impulses on a log scale so that the impact spikes (~2 V / h) and the resting force (~|f|) show
+# together. Titles give max_l |direct - fb_newton| and the rest times (labels.gp, exp_figure4).
+# Second figure, figure4_h_sweep: energy loss, mean energy, rest time and impact count over 121
+# step sizes 1e-5 <= h <= 1e-2, and the rest times of u0 moved by up to 200 ulps at h = 1e-3.
+# Usage: gnuplot -e "results='results/figure4'" experiments/figure4/plot.gp
+if (!exists("results")) results = 'results/figure4'
+load results.'/labels.gp'
+set datafile separator ','
+csv(scene, method) = sprintf('%s/%s_%s.csv', results, scene, method)
+f = -9.80665
+
+blue = "#0072B2"
+orange = "#E69F00"
+green = "#009E73"
+purple = "#CC79A7"
+
+do for [format in "png svg"] {
+  if (format eq "png") {
+    set terminal pngcairo size 1200,1300 font ",10"
+    set output 'figures/figure4.png'
+  } else {
+    set terminal svg size 1200,1300 font ",10" dynamic
+    set output 'figures/figure4.svg'
+  }
+  set multiplot layout 4,2 columnsfirst title \
+      "Figure 4: f = -9.80665 m/s^2, u_0 = 5 m, v_0 = -1 m/s, h = 10^{-3} s; direct vs fb\\_newton vs exact"
+  set grid
+  set xrange [0:10]
+  set xtics 1
+  set xlabel "t [s]"
+  set key top right box opaque noenhanced
+
+  do for [scene in "no_cor cor075"] {
+    label = (scene eq "no_cor") ? "no COR" : "COR = 0.75"
+    rest_d = value('rest_'.scene.'_direct'); rest_f = value('rest_'.scene.'_fb_newton')
+    exact_rest = (scene eq "no_cor") ? "exact: never" : sprintf("exact: t_{inf} = %.4f s", zeno)
+
+    set title sprintf("%s: displacement\nrest at %.3f s (direct), %.3f s (fb\\_newton); %s", \
+                      label, rest_d, rest_f, exact_rest)
+    set ylabel "u(t) [m]"
+    set yrange [-0.3:7]
+    set arrow 1 from rest_d, graph 0 to rest_d, graph 1 nohead dt 3 lc rgb blue
+    plot csv(scene, 'direct') skip 1 using 1:2 with lines lw 3 lc rgb blue title "direct", \
+         csv(scene, 'fb_newton') skip 1 using 1:2 with lines lw 2 dt 2 lc rgb orange \
+           title "fb_newton", \
+         csv(scene, 'exact') skip 1 using 1:2 with lines lw 1 lc rgb "black" title "exact"
+    unset arrow 1
+
+    set title sprintf("%s: velocity, max|direct - fb\\_newton| = %.2g m/s", label, \
+                      value('diff_'.scene.'_v'))
+    set ylabel "v(t) [m/s]"
+    set yrange [-11:13]
+    plot csv(scene, 'direct') skip 1 using 1:3 with lines lw 3 lc rgb blue title "direct", \
+         csv(scene, 'fb_newton') skip 1 using 1:3 with lines lw 2 dt 2 lc rgb orange \
+           title "fb_newton", \
+         csv(scene, 'exact') skip 1 using 1:3 with lines lw 1 lc rgb "black" title "exact"
+
+    set title sprintf("%s: contact force, max|direct - fb\\_newton| = %.2g m/s^2", label, \
+                      value('diff_'.scene.'_N'))
+    set ylabel "N(t) [m/s^2] (log scale)"
+    set logscale y
+    set yrange [1e-1:1e5]
+    set format y "10^{%L}"
+    # Impact steps (N > 2 |f|) as impulses; resting and chatter steps (0 < N <= 2 |f|) as dots.
+    impact(n) = n > 2 * abs(f) ? n : NaN
+    resting(n) = n > 0 && n <= 2 * abs(f) ? n : NaN
+    plot csv(scene, 'exact') skip 1 using 1:(impact($4)) with impulses lw 1 lc rgb "black" \
+           title "exact", \
+         '' skip 1 using 1:(resting($4)) with points pt 7 ps 0.15 lc rgb "black" notitle, \
+         csv(scene, 'direct') skip 1 using 1:(impact($4)) with impulses lw 2 lc rgb blue \
+           title "direct", \
+         '' skip 1 using 1:(resting($4)) with points pt 7 ps 0.15 lc rgb blue notitle, \
+         csv(scene, 'fb_newton') skip 1 using 1:(impact($4)) with points pt 6 ps 0.6 \
+           lc rgb orange title "fb_newton", \
+         '' skip 1 using 1:(resting($4)) with points pt 7 ps 0.1 lc rgb orange notitle
+    unset logscale y
+    set format y "%g"
+
+    set title sprintf("%s: energy, max|direct - fb\\_newton| = %.2g J/kg", label, \
+                      value('diff_'.scene.'_E'))
+    set ylabel "E(t) = v^2/2 - f u [J/kg]"
+    set yrange [0:55]
+    plot csv(scene, 'direct') skip 1 using 1:5 with lines lw 3 lc rgb blue title "direct", \
+         csv(scene, 'fb_newton') skip 1 using 1:5 with lines lw 2 dt 2 lc rgb orange \
+           title "fb_newton", \
+         csv(scene, 'exact') skip 1 using 1:5 with lines lw 1 lc rgb "black" title "exact"
+  }
+  unset multiplot
+  set output
+}
+
+sweep = results.'/h_sweep.csv'
+ensemble = results.'/ensemble.csv'
+set datafile columnheaders
+col(name) = column(name)
+zeno_error(name) = abs(column(name) - zeno)
+
+do for [format in "png svg"] {
+  if (format eq "png") {
+    set terminal pngcairo size 1200,1200 font ",10"
+    set output 'figures/figure4_h_sweep.png'
+  } else {
+    set terminal svg size 1200,1200 font ",10" dynamic
+    set output 'figures/figure4_h_sweep.svg'
+  }
+  set multiplot layout 3,2 rowsfirst title \
+      "Figure 4 over 121 step sizes h (f = -9.80665 m/s^2, u_0 = 5 m, v_0 = -1 m/s, T = 10 s)"
+  set grid
+  set logscale x
+  set xrange [1e-5:1e-2]
+  set xtics auto
+  set format x "10^{%L}"
+  set xlabel "h [s]"
+  set key box opaque noenhanced
+  set arrow 9 from 1e-3, graph 0 to 1e-3, graph 1 nohead dt 3 lc rgb "gray50"
+
+  set title "(a) no COR: energy lost, E(0) - E(T) and at the first impact (exact: 0)"
+  set logscale y
+  set yrange [0.1:500]
+  set format y "%g"
+  set ylabel "energy loss [J/kg] (log scale)"
+  set key top center maxrows 3
+  plot sweep using 1:(col("no_cor_direct_energy_loss")) with points pt 6 lc rgb blue \
+         title "direct, E(0) - E(T)", \
+       sweep using 1:(col("no_cor_fb_newton_energy_loss")) with points pt 2 lc rgb orange \
+         title "fb_newton, E(0) - E(T)", \
+       sweep using 1:(col("no_cor_direct_first_impact_loss")) with linespoints pt 7 ps 0.6 \
+         lw 1 lc rgb green title "direct, first impact", \
+       sweep using 1:(col("no_cor_fb_newton_first_impact_loss")) with points pt 1 ps 0.8 \
+         lc rgb purple title "fb_newton, first impact", \
+       energy0 with lines lc rgb "black" dt 2 title sprintf("E(0) = %.3f", energy0)
+  unset logscale y
+  set key maxrows auto
+
+  set title "(b) no COR: flatness of E(t), the mean of E^l over [0, T] / E(0) (exact: 1)"
+  set yrange [0:1.1]
+  set ylabel "mean E / E(0)"
+  set key top right
+  plot sweep using 1:(col("no_cor_direct_energy_mean") / energy0) with linespoints pt 6 \
+         lw 1 lc rgb blue title "direct", \
+       sweep using 1:(col("no_cor_fb_newton_energy_mean") / energy0) with points pt 2 \
+         lc rgb orange title "fb_newton", \
+       1 with lines lc rgb "black" title "exact (elastic)"
+
+  set title "(c) no COR: rest time (exact: never rests)"
+  set yrange [0:10.5]
+  set ylabel "rest time [s]"
+  set key top left
+  plot sweep using 1:(col("no_cor_direct_rest_time")) with linespoints pt 6 lw 1 \
+         lc rgb blue title "direct", \
+       sweep using 1:(col("no_cor_fb_newton_rest_time")) with points pt 2 lc rgb orange \
+         title "fb_newton", \
+       ensemble using (1e-3):(col("no_cor_direct")) with points pt 1 ps 0.5 lc rgb "gray40" \
+         title "direct, h = 1e-3, u0 moved by <= 200 ulps", \
+       7.5 with lines lc rgb "black" dt 2 title "paper: 'comes to a stop at around t = 7.5'"
+
+  set title sprintf("(d) COR = 0.75: rest time against the exact Zeno time %.4f s", zeno)
+  set yrange [6.5:7.1]
+  set key bottom right
+  plot sweep using 1:(col("cor075_direct_rest_time")) with linespoints pt 6 lw 1 \
+         lc rgb blue title "direct", \
+       sweep using 1:(col("cor075_fb_newton_rest_time")) with points pt 2 lc rgb orange \
+         title "fb_newton", \
+       zeno with lines lc rgb "black" title "exact t_inf = t_1 + 2 COR V_1 / (|f| (1 - COR))"
+
+  set title sprintf("(e) COR = 0.75: rest-time error |t_{rest} - t_{inf}| (fitted order %.2f)", \
+                    order_direct)
+  set logscale y
+  set yrange [1e-6:1]
+  set format y "10^{%L}"
+  set ylabel "|t_rest - t_inf| [s]"
+  set key bottom right
+  plot sweep using 1:(zeno_error("cor075_direct_rest_time")) with points pt 6 lc rgb blue \
+         title "direct", \
+       sweep using 1:(zeno_error("cor075_fb_newton_rest_time")) with points pt 2 \
+         lc rgb orange title "fb_newton", \
+       2.5 * x * log(9.95 / (x * 9.80665 / 2)) / log(4.0 / 3) with lines lw 2 lc rgb "#D55E00" \
+         title "2.5 h K(h), K = ln(2 V_1/(h |f|)) / ln(1/COR)", \
+       10 * x with lines lc rgb "gray50" dt 3 title "10 h (order 1)"
+  unset logscale y
+  set format y "%g"
+
+  set title "(f) impacts before rest"
+  set yrange [0:55]
+  set ylabel "impacts"
+  set key top left
+  plot sweep using 1:(col("cor075_direct_impacts")) with linespoints pt 6 lw 1 lc rgb blue \
+         title "direct, COR = 0.75", \
+       sweep using 1:(col("cor075_fb_newton_impacts")) with points pt 2 lc rgb orange \
+         title "fb_newton, COR = 0.75", \
+       sweep using 1:(col("no_cor_direct_impacts")) with linespoints pt 7 ps 0.6 lw 1 \
+         lc rgb green title "direct, no COR", \
+       sweep using 1:(col("no_cor_fb_newton_impacts")) with points pt 1 lc rgb purple \
+         title "fb_newton, no COR"
+  unset multiplot
+  unset arrow 9
+  set output
+}
