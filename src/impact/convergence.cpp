@@ -1,0 +1,277 @@
+#include "impact/convergence.hpp"
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_fit.h>
+#include <gsl/gsl_integration.h>
+
+#include <algorithm>
+#include <memory>
+#include <stdexcept>
+#include <variant>
+
+#include "impact/output.hpp"
+#include "impact/registry.hpp"
+#include "impact/scene.hpp"
+
+namespace impact {
+
+namespace {
+
+// x in round-trip precision, so that the scene text holds exactly this double.
+std::string num(double x) {
+  char buf[32];
+  return std::string(buf, format_double(buf, buf + sizeof buf, x));
+}
+
+// The scene of one run, written as text so that it goes through the same validation and grid
+// rule as a scene file given to the CLI.
+Scene scene_of(std::string_view method, const Model& model, const State& initial, double T,
+               double h) {
+  std::string text = "[initial]\nu0 = " + num(initial.u) + "\nv0 = " + num(initial.v) +
+                     "\n[floor]\nphi = " + num(model.phi) + "\n";
+  if (model.cor) text += "cor = " + num(*model.cor) + "\n";
+  text += "[force]\nf = " + num(model.f) + "\n[time]\nT = " + num(T) + "\nh = " + num(h) +
+          "\n[method]\nname = \"" + std::string(method) + "\"\n";
+  return parse_scene(text, "convergence(" + std::string(method) + ", h = " + num(h) + ")");
+}
+
+// GSL's adaptive Gauss-Kronrod quadrature (QAG, 21 points) of a callable over [a, b], split at
+// the points where the integrand has kinks or jumps (the impact times), so that each piece is
+// smooth. QAG on each piece rather than QAGP on the whole: QAGP's extrapolation misreads the
+// crowd of tiny jumps before a Zeno point as a divergence.
+class Quadrature {
+ public:
+  Quadrature() : workspace_(gsl_integration_workspace_alloc(kLimit)) {
+    if (!workspace_) throw std::bad_alloc();
+  }
+  Quadrature(const Quadrature&) = delete;
+  Quadrature& operator=(const Quadrature&) = delete;
+  ~Quadrature() { gsl_integration_workspace_free(workspace_); }
+
+  // Throws std::runtime_error when GSL reports a failure other than round-off (the error
+  // handler is off meanwhile, so that GSL returns its status instead of aborting).
+  template <class F>
+  double integrate(F&& integrand, double a, double b, const std::vector<double>& kinks) {
+    std::vector<double> points{a};
+    for (double t : kinks)
+      if (t > a && t < b) points.push_back(t);
+    points.push_back(b);
+    std::sort(points.begin(), points.end());
+    gsl_function fn;
+    fn.function = [](double t, void* p) { return (*static_cast<F*>(p))(t); };
+    fn.params = &integrand;
+    double total = 0;
+    gsl_error_handler_t* previous = gsl_set_error_handler_off();
+    for (std::size_t i = 0; i + 1 < points.size(); ++i) {
+      if (!(points[i + 1] > points[i])) continue;
+      double result = 0, abserr = 0;
+      const int status =
+          gsl_integration_qag(&fn, points[i], points[i + 1], kAbsTol, kRelTol, kLimit,
+                              GSL_INTEG_GAUSS21, workspace_, &result, &abserr);
+      // GSL_EROUND: the integrand is at the round-off level of its magnitude (e.g. int u psi''
+      // with u linear on the support, exactly 0), and the result is that level; accepted.
+      if (status != GSL_SUCCESS && status != GSL_EROUND) {
+        gsl_set_error_handler(previous);
+        throw std::runtime_error(std::string("GSL quadrature failed: ") + gsl_strerror(status));
+      }
+      total += result;
+    }
+    gsl_set_error_handler(previous);
+    return total;
+  }
+
+ private:
+  // Each piece is a polynomial (u, v, I between impacts) times a smooth bump: the 21-point rule
+  // reaches the round-off level with few subdivisions.
+  static constexpr double kAbsTol = 1e-13, kRelTol = 1e-12;
+  static constexpr std::size_t kLimit = 2000;
+  gsl_integration_workspace* workspace_;
+};
+
+// The impact times in (0, T] and the time the particle comes to rest, if it does: where u has kinks
+// and the cumulative impulse jumps. Before a Zeno accumulation the impact times crowd together;
+// one closer than kMinSpacing to the previous kept time is dropped (its jump, at most
+// (1 + e) e^k V1, falls below the quadrature tolerance long before the spacing does, and GSL
+// cannot subdivide intervals a few ulp wide).
+std::vector<double> impact_times(const ExactSolution& x, double T) {
+  constexpr std::int64_t kImpactCap = 400;
+  const double min_spacing = 1e-9 * std::fmax(1.0, T);
+  std::vector<double> times;
+  for (std::int64_t k = 1; k <= kImpactCap; ++k) {
+    const auto t = x.impact_time(k);
+    if (!t || *t > T) break;
+    if (times.empty() || *t - times.back() > min_spacing) times.push_back(*t);
+  }
+  if (const auto rest = x.rest_time(); rest && *rest <= T) times.push_back(*rest);
+  return times;
+}
+
+}  // namespace
+
+ConvergencePoint measure_convergence(std::string_view method, const Model& model,
+                                     const State& initial, double T, double h,
+                                     const std::optional<Model>& reference) {
+  const Scene scene = scene_of(method, model, initial, T, h);
+  AnyStepper stepper = make_stepper(scene);
+  ConvergencePoint point;
+  point.h = scene.grid.h;
+  point.t_end = scene.grid.t(scene.grid.steps);
+  point.initial = scene.initial;
+  point.f = scene.model.f;
+  point.tallies.last = scene.initial;
+  std::visit(
+      [&](auto& inner) {
+        TallyingStepper tallying(inner, scene.model, scene.grid.h, point.tallies);
+        point.errors =
+            measure_errors(tallying, reference.value_or(scene.model), scene.initial, scene.grid);
+      },
+      stepper);
+  point.final = point.tallies.last;
+  return point;
+}
+
+double sup_distance(std::string_view method_a, std::string_view method_b, const Model& model,
+                    const State& initial, double T, double h) {
+  const Scene scene_a = scene_of(method_a, model, initial, T, h);
+  const Scene scene_b = scene_of(method_b, model, initial, T, h);
+  AnyStepper a = make_stepper(scene_a), b = make_stepper(scene_b);
+  return std::visit(
+      [&](auto& stepper_a, auto& stepper_b) {
+        LockstepStepper pair(stepper_a, stepper_b, scene_a.initial, scene_a.grid.h);
+        simulate(pair, scene_a.initial, scene_a.grid,
+                 [](std::int64_t, const State&, const StepInfo&) {});
+        return pair.sup_distance();
+      },
+      a, b);
+}
+
+double sup_distance(const ExactSolution& u, const ExactSolution& w, double T) {
+  constexpr int kSamples = 10000;
+  std::vector<double> times = impact_times(u, T);
+  const std::vector<double> w_times = impact_times(w, T);
+  times.insert(times.end(), w_times.begin(), w_times.end());
+  for (int i = 0; i <= kSamples; ++i) times.push_back(T * i / kSamples);
+  double sup = 0;
+  for (double t : times) sup = std::fmax(sup, std::fabs(u.at(t).u - w.at(t).u));
+  return sup;
+}
+
+OrderFit fit_order(std::span<const double> h, std::span<const double> err) {
+  if (h.size() != err.size()) throw std::invalid_argument("fit_order: h and err differ in size");
+  std::vector<double> x, y;
+  for (std::size_t i = 0; i < h.size(); ++i)
+    if (err[i] > 0 && h[i] > 0) {
+      x.push_back(std::log(h[i]));
+      y.push_back(std::log(err[i]));
+    }
+  OrderFit fit;
+  fit.points = x.size();
+  if (x.size() < 2) return fit;
+  double c0 = 0, c1 = 0, cov00 = 0, cov01 = 0, cov11 = 0, sumsq = 0;
+  gsl_fit_linear(x.data(), 1, y.data(), 1, x.size(), &c0, &c1, &cov00, &cov01, &cov11, &sumsq);
+  fit.order = c1;
+  fit.log_constant = c0;
+  fit.h_min = std::exp(*std::min_element(x.begin(), x.end()));
+  fit.h_max = std::exp(*std::max_element(x.begin(), x.end()));
+  for (std::size_t i = 0; i < x.size(); ++i)
+    fit.max_log_deviation = std::fmax(fit.max_log_deviation, std::fabs(y[i] - (c0 + c1 * x[i])));
+  return fit;
+}
+
+std::vector<double> log_spaced(double h_max, double h_min, int n) {
+  std::vector<double> h;
+  for (int i = 0; i < n; ++i)
+    h.push_back(n == 1 ? h_max : h_max * std::pow(h_min / h_max, static_cast<double>(i) / (n - 1)));
+  return h;
+}
+
+// psi = exp(g(s)), g = -1 / (1 - s^2): g' = -2 s / (1 - s^2)^2, g'' = -(2 + 6 s^2) / (1 - s^2)^3,
+// psi' = psi g' / r, psi'' = psi (g'^2 + g'') / r^2. Where 1 - s^2 < 1e-3, psi < e^-1000 underflows
+// to 0 while the powers of 1 / (1 - s^2) could overflow, so 0 is returned there.
+double Bump::value(double t) const {
+  const double s = (t - center) / radius, q = 1 - s * s;
+  return q < 1e-3 ? 0.0 : std::exp(-1 / q);
+}
+double Bump::first(double t) const {
+  const double s = (t - center) / radius, q = 1 - s * s;
+  return q < 1e-3 ? 0.0 : std::exp(-1 / q) * (-2 * s / (q * q)) / radius;
+}
+double Bump::second(double t) const {
+  const double s = (t - center) / radius, q = 1 - s * s;
+  if (q < 1e-3) return 0.0;
+  const double g1 = -2 * s / (q * q), g2 = -(2 + 6 * s * s) / (q * q * q);
+  return std::exp(-1 / q) * (g1 * g1 + g2) / (radius * radius);
+}
+
+WeakSolutionCheck check_weak_solution(const ExactSolution& x, const Model& model, double T) {
+  constexpr int kSamples = 100000;
+  const std::vector<double> kinks = impact_times(x, T);
+  WeakSolutionCheck check;
+
+  // (2-2), u >= phi: on a fine sampling and at the impact times.
+  check.min_gap = x.at(0).u - model.phi;
+  for (int i = 0; i <= kSamples; ++i)
+    check.min_gap = std::fmin(check.min_gap, x.at(T * i / kSamples).u - model.phi);
+  for (double t : kinks) check.min_gap = std::fmin(check.min_gap, x.at(t).u - model.phi);
+
+  // (2-2), N >= 0 as a measure: the impulse of every cell of a partition of (0, T] whose points
+  // include each impact time (so each atom falls into one cell) is >= 0.
+  std::vector<double> partition;
+  for (int i = 0; i <= kSamples / 10; ++i) partition.push_back(T * i / (kSamples / 10));
+  partition.insert(partition.end(), kinks.begin(), kinks.end());
+  std::sort(partition.begin(), partition.end());
+  check.min_cell_impulse = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i + 1 < partition.size(); ++i)
+    check.min_cell_impulse =
+        std::fmin(check.min_cell_impulse, x.impulse(partition[i], partition[i + 1]));
+  check.total_impulse = x.impulse(0, T);
+
+  // (2-2), N (u - phi) = 0: int_(0,T] (u - phi) dI with I(t) = impulse(0, t) the cumulative
+  // impulse, by parts for the continuous u: (u(T) - phi) I(T) - int_0^T I u' dt.
+  Quadrature quad;
+  const auto cumulative = [&](double t) { return x.impulse(0, t); };
+  check.complementarity =
+      (x.at(T).u - model.phi) * check.total_impulse -
+      quad.integrate([&](double t) { return cumulative(t) * x.at(t).v; }, 0, T, kinks);
+
+  // (2-1) in the sense of distributions: int u psi'' = int psi dN + f int psi, where
+  // int psi dN = -int psi' I dt (psi vanishes at the ends of its support). The bumps cover [0, T]
+  // at three widths, plus one centred on each of the first impacts.
+  std::vector<Bump> bumps;
+  for (double radius : {T / 40, T / 10, T / 4})
+    for (double c = radius * 1.01; c + radius * 1.01 < T; c += radius / 2)
+      bumps.push_back({c, radius});
+  for (std::size_t k = 0; k < kinks.size() && k < 8; ++k) {
+    const double r = std::fmin(0.5, 0.99 * std::fmin(kinks[k], T - kinks[k]));
+    if (r > 0) bumps.push_back({kinks[k], r});
+  }
+  for (const Bump& psi : bumps) {
+    const double a = psi.center - psi.radius, b = psi.center + psi.radius;
+    const double u_psi2 =
+        quad.integrate([&](double t) { return x.at(t).u * psi.second(t); }, a, b, kinks);
+    const double psi_dN =
+        -quad.integrate([&](double t) { return psi.first(t) * cumulative(t); }, a, b, kinks);
+    const double f_psi = model.f * quad.integrate([&](double t) { return psi.value(t); }, a, b, {});
+    check.max_weak_residual =
+        std::fmax(check.max_weak_residual, std::fabs(u_psi2 - psi_dN - f_psi));
+    check.max_weak_scale = std::fmax(check.max_weak_scale, std::fabs(u_psi2));
+  }
+  check.test_functions = static_cast<int>(bumps.size());
+  return check;
+}
+
+EnergyIdentity412 energy_identity_412(const ExactSolution& u, const ExactSolution& w,
+                                      const Model& model, double t) {
+  const State u0 = u.at(0), w0 = w.at(0), ut = u.at(t), wt = w.at(t);
+  EnergyIdentity412 r;
+  const double z0 = u0.v - w0.v, zt = ut.v - wt.v;
+  r.lhs = (zt * zt - z0 * z0) / 2;
+  r.paper_rhs = -ut.v * wt.v + u0.v * w0.v;
+  r.force_terms = model.f * (ut.u - u0.u + wt.u - w0.u);
+  r.dropped_n1_u = energy(model, ut) - energy(model, u0);
+  r.dropped_n2_w = energy(model, wt) - energy(model, w0);
+  r.paper_413 = zt * zt - z0 * z0;
+  return r;
+}
+
+}  // namespace impact
