@@ -1,26 +1,38 @@
 // `impact-claims`: prints the verdict table of paper_notes/claims.md with the numbers of the latest
 // experiment results. A ledger row cites its measured numbers as `experiment:key`; the value is
 // read from results/<experiment>/summary.toml, so the table shows what the last run measured.
+#include <toml++/toml.h>
+
 #include <fstream>
 #include <iostream>
 #include <map>
 #include <regex>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
-
-#include <toml++/toml.h>
 
 namespace {
 
+// The cells of a Markdown table row; "\|" is a literal bar inside a cell.
 std::vector<std::string> cells(const std::string& row) {
   std::vector<std::string> out;
-  std::stringstream in(row);
   std::string cell;
-  std::getline(in, cell, '|');  // before the first bar
-  while (std::getline(in, cell, '|')) {
-    const auto first = cell.find_first_not_of(' '), last = cell.find_last_not_of(' ');
-    out.push_back(first == std::string::npos ? "" : cell.substr(first, last - first + 1));
+  bool started = false;
+  for (std::size_t i = 0; i < row.size(); ++i) {
+    if (row[i] == '\\' && i + 1 < row.size() && row[i + 1] == '|') {
+      cell += '|';
+      ++i;
+    } else if (row[i] == '|') {
+      if (started) {
+        const auto first = cell.find_first_not_of(' '), last = cell.find_last_not_of(' ');
+        out.push_back(first == std::string::npos ? "" : cell.substr(first, last - first + 1));
+      }
+      started = true;
+      cell.clear();
+    } else {
+      cell += row[i];
+    }
   }
   return out;
 }
@@ -65,7 +77,7 @@ int main(int argc, char** argv) {
     // Columns: id | where | claim | experiment / test | measured | verdict
     std::string measured;
     for (std::sregex_iterator m(c[4].begin(), c[4].end(), reference), end; m != end; ++m)
-      measured += (measured.empty() ? "" : "; ") + (*m)[2].str() + " = " +
+      measured += (measured.empty() ? "" : "; ") + (*m)[1].str() + ":" + (*m)[2].str() + " = " +
                   latest(results, (*m)[1].str(), (*m)[2].str(), cache);
     std::cout << c[0] << " | " << c[1] << " | " << c[5] << " | "
               << (measured.empty() ? c[4] : measured) << "\n";
