@@ -241,7 +241,7 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "error in the paper: (4-9) as printed, h sum N^l = v^n - v^0, omits the body force; "
+    "error in the paper: (4-9) as printed, h sum N^l = v^n - v^0, omits the body force: "
     "h sum N^l = v^n - v^0 - f T holds",
     "[claim][convergence]") {
   const Model model = model_of(-kGravity, std::nullopt);

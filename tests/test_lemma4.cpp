@@ -180,7 +180,7 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "error in the paper: (4-13) does not follow from (4-12) when COR = 1; the two elastic "
+    "error in the paper: (4-13) does not follow from (4-12) when COR = 1: the two elastic "
     "solutions from u0 = 5 and 5.5 satisfy (4-12) with z_t(0) = 0, yet z_t = 2 on (5, 5.5)",
     "[claim][lemma4]") {
   const Model elastic = model_of(0, 1.0);
