@@ -3,7 +3,9 @@
 // solved for u^{l+1} with Newton's method.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
+#include <string>
 
 #include "impact/free_flight.hpp"
 #include "impact/model.hpp"
@@ -22,15 +24,31 @@ class FbNewton {
  public:
   static FbNewtonParams read_params(MethodParams& p);
   FbNewton(const Model& model, double h, const FbNewtonParams& params)
-      : model_(model), h_(h), params_(params), flight_(model.f, h) {}
+      : model_(model),
+        h_(h),
+        params_(params),
+        sqrt_eps_(std::sqrt(params.epsilon)),
+        flight_(model.f, h) {}
 
   StepInfo step(State& s, std::int64_t l);
+
+  // Why the last step did not converge: the residual it reached, for simulate()'s message.
+  std::string failure_reason() const;
 
  private:
   Model model_;
   double h_;
   FbNewtonParams params_;
-  FreeFlight flight_;
+  double sqrt_eps_;    // the velocity scale of the smoothing, see step()
+  FreeFlight flight_;  // in gap coordinates (u - phi, v), see step()
+  // The state at t_l in gap coordinates as the last step computed it, the state it returned (with
+  // u = phi + gap rounded), and the l it is at: a caller's state equal to `returned_` at
+  // `next_l_` continues from `gap_`.
+  State gap_, returned_;
+  std::int64_t next_l_ = -1;
+  // The last Newton solve, for failure_reason().
+  double residual_ = 0, threshold_ = 0, force_ = 0;
+  int iterations_ = 0;
 };
 
 }  // namespace impact

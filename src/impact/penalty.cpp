@@ -10,6 +10,7 @@
 #include <limits>
 #include <new>
 #include <numbers>
+#include <sstream>
 #include <stdexcept>
 #include <string_view>
 #include <vector>
@@ -119,6 +120,13 @@ struct Penalty::Impl {
   bool needs_reset = true;  // before the next step: the first one, or the last one failed
   std::int64_t next_l = 0;
   State last;
+  // The last failed step, for failure_reason().
+  std::string stepper_name;
+  double rtol, atol;
+  int failure_status = GSL_SUCCESS;
+  unsigned long failure_steps = 0;
+  double failure_t = 0.0;
+  std::array<double, 3> failure_y{};
 };
 
 Penalty::Impl::Impl(const Model& model, double grid_h, const PenaltyParams& params)
@@ -130,6 +138,9 @@ Penalty::Impl::Impl(const Model& model, double grid_h, const PenaltyParams& para
     throw std::invalid_argument("Penalty: rtol and atol must be > 0");
   const gsl_odeiv2_step_type* type = find_stepper(params.stepper);
   if (!type) throw std::invalid_argument("Penalty: unknown GSL stepper \"" + params.stepper + "\"");
+  stepper_name = params.stepper;
+  rtol = params.rtol;
+  atol = params.atol;
   w = std::sqrt(c_N);
   const double contact_time = std::numbers::pi / w;  // the duration of a contact when f = 0
   tiny = 1e-6 * contact_time;
@@ -253,6 +264,10 @@ StepInfo Penalty::step(State& s, std::int64_t l) {
   if (status != GSL_SUCCESS ||
       !(std::isfinite(m.y[0]) && std::isfinite(m.y[1]) && std::isfinite(m.y[2]))) {
     info.converged = false;
+    m.failure_status = status;
+    m.failure_steps = taken;
+    m.failure_t = t;
+    m.failure_y = m.y;
     return info;
   }
   info.contact_force = (m.y[2] - P0) / m.h;
@@ -262,6 +277,25 @@ StepInfo Penalty::step(State& s, std::int64_t l) {
   m.next_l = l + 1;
   m.needs_reset = false;
   return info;
+}
+
+std::string Penalty::failure_reason() const {
+  const Impl& m = *impl_;
+  std::ostringstream msg;
+  msg.precision(3);
+  msg << "GSL odeiv2 stepper " << m.stepper_name << " ";
+  if (m.failure_status == GSL_EMAXITER)
+    msg << "took more than " << kMaxOdeSteps << " ODE steps in this grid step";
+  else if (m.failure_status != GSL_SUCCESS)
+    msg << "could not meet rtol = " << m.rtol << ", atol = " << m.atol
+        << " (GSL: " << gsl_strerror(m.failure_status) << ") after " << m.failure_steps
+        << " ODE steps";
+  else
+    msg << "produced a non-finite state after " << m.failure_steps << " ODE steps";
+  msg << ", at t = " << m.failure_t << " with u - phi = " << m.failure_y[0]
+      << ", v = " << m.failure_y[1] << " (c_N = " << m.c_N
+      << ": contacts last pi/sqrt(c_N) = " << std::numbers::pi / m.w << ")";
+  return msg.str();
 }
 
 }  // namespace impact

@@ -33,6 +33,10 @@ class Penalty {
   // iterations the number of GSL steps taken.
   StepInfo step(State& s, std::int64_t l);
 
+  // Why the last step did not converge (the GSL status and where it stopped), for simulate()'s
+  // message.
+  std::string failure_reason() const;
+
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;

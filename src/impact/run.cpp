@@ -5,6 +5,11 @@
 namespace impact {
 
 void throw_step_failure(std::int64_t l, double t, State s, StepInfo info) {
+  throw_step_failure(l, t, s, info, std::string());
+}
+
+void throw_step_failure(std::int64_t l, double t, State s, StepInfo info,
+                        const std::string& detail) {
   std::ostringstream msg;
   msg.precision(17);
   msg << "step " << l << " (from t = " << t << "): ";
@@ -12,7 +17,8 @@ void throw_step_failure(std::int64_t l, double t, State s, StepInfo info) {
     msg << "the solve did not converge after " << info.iterations << " iterations";
   else
     msg << "non-finite result u = " << s.u << ", v = " << s.v << ", N = " << info.contact_force;
-  throw NumericalError(msg.str());
+  if (!detail.empty()) msg << ": " << detail;
+  throw NumericalError(msg.str(), info.converged);
 }
 
 }  // namespace impact
