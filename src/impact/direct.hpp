@@ -5,11 +5,49 @@
 
 #include "impact/free_flight.hpp"
 #include "impact/model.hpp"
-#include "impact/restitution.hpp"
 
 namespace impact {
 
 class MethodParams;
+
+// What direct carries from step to step, for one particle (Real = double) or for a vector of
+// particles (the ensemble, ensemble.hpp). Between contacts the scheme is the closed-form free
+// flight from the anchor (free_flight.hpp explains why it is not stepped increment by increment).
+template <class Real>
+struct DirectLanes {
+  Real anchor_u{}, anchor_v{};  // the state where the free flight started: the end of the last
+                                // contact step, or the initial state
+  Real since{};                 // l - l_anchor at t_l, a whole number (exact in a double)
+  Real u{}, v{};                // the state at t_l
+  Real contact_force{};         // N^{l-1}, of the step that ended at t_l
+};
+
+// One step of direct from t_l to t_{l+1}. Real is double (with Mask = bool) or a vector of lanes
+// (with Mask its comparison result): the same operations in the same order for both, every value
+// computed and the branches taken as selections, so that each lane of the ensemble is
+// bit-identical to the single-particle solver. `cor` is read only where has_cor holds.
+template <class Real, class Mask>
+void direct_step(DirectLanes<Real>& s, const Real& phi, const Real& f, const Real& cor,
+                 const Mask& has_cor, double h) {
+  const Real since = s.since + 1;
+  const Real t = since * h;
+  // (5-1) with N^l = 0: where the particle would be if the floor were not there.
+  Real u_free, v_free;
+  free_flight(s.anchor_u, s.anchor_v, t, f, u_free, v_free);
+  const auto free = u_free > phi;
+  // Otherwise (4-3) forces u^{l+1} = phi; (5-1) solved for N^l,
+  // N^l = (2/h)((phi - u^l)/h - v^l) - f = (2/h^2)(phi - u_free) >= 0.
+  const Real force = 2 / (h * h) * (phi - u_free);
+  const Real v_scheme = v_free + h * force;  // (4-1), equal to (4-2) here
+  // The COR law of restitution.hpp: v^{l+1} = -COR v^l on a contact step, else the scheme's own.
+  const Real v_contact = has_cor ? -cor * s.v : v_scheme;
+  s.contact_force = free ? Real{} : force;
+  s.u = free ? u_free : phi;
+  s.v = free ? v_free : v_contact;
+  s.anchor_u = free ? s.anchor_u : phi;
+  s.anchor_v = free ? s.anchor_v : v_contact;
+  s.since = free ? since : Real{};
+}
 
 struct DirectParams {};
 
@@ -17,32 +55,31 @@ class Direct {
  public:
   static DirectParams read_params(MethodParams&) { return {}; }
   Direct(const Model& model, double h, const DirectParams&)
-      : model_(model), h_(h), flight_(model.f, h) {}
+      : phi_(model.phi), f_(model.f), cor_(model.cor.value_or(0.0)), has_cor_(model.cor), h_(h) {}
 
   StepInfo step(State& s, std::int64_t l) {
-    const double phi = model_.phi, h = h_;
-    // (5-1) with N^l = 0: where the particle would be if the floor were not there.
-    const State free = flight_.predict(s, l);
-    StepInfo info;
-    if (free.u > phi) {
-      s = free;
-      flight_.accept(l + 1, s, true);
-      return info;
+    // Starts a new free flight at (l, s) unless s is the state the last step produced at t_l.
+    if (l != next_l_ || s.u != lanes_.u || s.v != lanes_.v) {
+      lanes_.anchor_u = s.u;
+      lanes_.anchor_v = s.v;
+      lanes_.since = 0;
     }
-    // (4-3) forces u^{l+1} = phi; (5-1) solved for N^l,
-    // N^l = (2/h)((phi - u^l)/h - v^l) - f = (2/h^2)(phi - u_free) >= 0.
-    info.contact_force = 2 / (h * h) * (phi - free.u);
-    const double v_scheme = free.v + h * info.contact_force;  // (4-1), equal to (4-2) here
-    s.v = velocity_after_contact(model_, s.v, v_scheme);
-    s.u = phi;
-    flight_.accept(l + 1, s, false);
+    lanes_.u = s.u;
+    lanes_.v = s.v;
+    direct_step(lanes_, phi_, f_, cor_, has_cor_, h_);
+    next_l_ = l + 1;
+    s = {lanes_.u, lanes_.v};
+    StepInfo info;
+    info.contact_force = lanes_.contact_force;
     return info;
   }
 
  private:
-  Model model_;
+  double phi_, f_, cor_;
+  bool has_cor_;
   double h_;
-  FreeFlight flight_;
+  DirectLanes<double> lanes_;
+  std::int64_t next_l_ = -1;
 };
 
 }  // namespace impact

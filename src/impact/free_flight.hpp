@@ -5,6 +5,9 @@
 // recovering v from (4-2), 2 (u^{l+1} - u^l)/h - v^l, multiplies the rounding of u by 2/h. So
 // `direct` and `fb_newton` evaluate the same discrete solution from the last contact in closed
 // form: u = u_a + s (v_a + s f/2), v = v_a + s f, s = (l + 1 - l_a) h.
+// free_flight() is that formula, a template over the lane type so that the ensemble
+// (ensemble.hpp), which steps a vector of particles at once, does the same operations in the same
+// order as the single-particle solvers and so gets bit-identical results.
 #pragma once
 
 #include <cstdint>
@@ -12,6 +15,15 @@
 #include "impact/model.hpp"
 
 namespace impact {
+
+// The free flight at time t after the anchor (u_a, v_a) under the force f (Real: double or a vector
+// of lanes; Scalar: double or Real).
+template <class Real, class Scalar>
+void free_flight(const Real& u_a, const Real& v_a, const Real& t, const Scalar& f, Real& u,
+                 Real& v) {
+  u = u_a + t * (v_a + t * f / 2);
+  v = v_a + t * f;
+}
 
 class FreeFlight {
  public:
@@ -25,7 +37,9 @@ class FreeFlight {
       anchor_ = s;
     }
     const double t = static_cast<double>(l + 1 - anchor_l_) * h_;
-    return {anchor_.u + t * (anchor_.v + t * f_ / 2), anchor_.v + t * f_};
+    State next;
+    free_flight(anchor_.u, anchor_.v, t, f_, next.u, next.v);
+    return next;
   }
 
   // Records the accepted state at t_l; a state that is not the free prediction (a contact step)

@@ -15,6 +15,28 @@ namespace impact {
 
 class MethodParams;
 
+// One step of Moreau-Jean for one particle (Real = double) or a vector of particles (the ensemble,
+// ensemble.hpp): the same operations in the same order for both, the branches taken as
+// selections, so that each lane of the ensemble is bit-identical to the single-particle solver.
+// e is the COR (1 without one); contact_force is set to P^{l+1} / h.
+template <class Real>
+void moreau_jean_step(Real& u, Real& v, Real& contact_force, const Real& phi, const Real& f,
+                      const Real& e, double theta, double h) {
+  const Real v_free = v + h * f;
+  // The contact is active when u^l - phi + gamma h v^l <= 0; then the one-contact LCP in closed
+  // form: the smallest impulse that makes v^{l+1} >= -e v^l. `bound` is -e v^l where the contact
+  // is active and v_free (so no impulse) elsewhere: a selection feeding a comparison, because
+  // nested selections or `active & (v_free < target)` made GCC build the AVX-512 masks lane by
+  // lane (the ensemble ran 2.3x slower).
+  const Real target = -e * v;
+  const Real bound = u - phi + 0.5 * h * v <= 0.0 ? target : v_free;
+  const Real impulse = v_free < bound ? bound - v_free : Real{};
+  const Real v_next = v_free + impulse;
+  u += h * (theta * v_next + (1 - theta) * v);
+  v = v_next;
+  contact_force = impulse / h;
+}
+
 struct MoreauJeanParams {
   double theta = 0.5;
 };
@@ -23,27 +45,16 @@ class MoreauJean {
  public:
   static MoreauJeanParams read_params(MethodParams& p);
   MoreauJean(const Model& model, double h, const MoreauJeanParams& params)
-      : model_(model), h_(h), theta_(params.theta), e_(model.cor.value_or(1.0)) {}
+      : phi_(model.phi), f_(model.f), h_(h), theta_(params.theta), e_(model.cor.value_or(1.0)) {}
 
   StepInfo step(State& s, std::int64_t) const {
-    const double h = h_;
-    const double v_free = s.v + h * model_.f;
-    double impulse = 0;
-    if (s.u - model_.phi + 0.5 * h * s.v <= 0) {
-      // The one-contact LCP in closed form: the smallest impulse that makes v^{l+1} >= -e v^l.
-      const double target = -e_ * s.v;
-      if (v_free < target) impulse = target - v_free;
-    }
-    const double v_next = v_free + impulse;
-    s.u += h * (theta_ * v_next + (1 - theta_) * s.v);
-    s.v = v_next;
     StepInfo info;
-    info.contact_force = impulse / h;
+    moreau_jean_step(s.u, s.v, info.contact_force, phi_, f_, e_, theta_, h_);
     return info;
   }
 
  private:
-  Model model_;
+  double phi_, f_;
   double h_;
   double theta_;
   double e_;

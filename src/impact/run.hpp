@@ -88,7 +88,7 @@ template <class Stepper, class Observer>
 //  - it steps a local copy of the stepper, moved back when the run ends: a stepper that other code
 //    can reach (in a variant, on the heap) has its members kept in memory across the loop, a local
 //    one in registers. Moving it back also on an exception (a scope guard, or a catch) made GCC
-//    keep the local in memory as well (4.5 or 7.4 instead of 3.0 ns per direct step on Figure 4's
+//    keep the local in memory as well (7.6 or 7.4 instead of 3.0 ns per direct step on Figure 4's
 //    COR scene), so after a NumericalError the stepper is valid but moved from: destroy it or
 //    assign it, but make a new one to run again;
 //  - each step's StepInfo is a fresh constant: assigned to a variable living across the loop, GCC

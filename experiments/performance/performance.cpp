@@ -1,0 +1,380 @@
+// Throughput of the solvers (issue 4), with Google Benchmark. CPU time of the solve alone, output
+// off, after a warm-up, repeated; the minimum and the median over the repetitions are reported.
+//   stepper/<method>/<scene>   ns per step through simulate() (as `impact run` calls it), for
+//                              direct, moreau_jean, fb_newton, penalty (per grid step and per ODE
+//                              step) and exact (the closed-form reference sampled on the grid)
+//   exact_impacts              ns per impact of the exact solution (impact time and speed)
+//   ensemble/<method>/<isa>    particle-steps per second of the vectorised ensemble
+//   cli/<method>/<scene>/<n>   `impact run` as a user runs it: a process, a scene file, n steps,
+//                              CSV output decimated to about 10^4 rows; CPU time of the child
+//   cli_rows                   `impact run` writing every step: the cost of one CSV row
+// Usage: exp_performance RESULTS_DIR IMPACT_CLI [Google Benchmark flags]
+// Writes RESULTS_DIR/benchmarks.csv, RESULTS_DIR/summary.toml and RESULTS_DIR/table.md.
+#include <benchmark/benchmark.h>
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "impact/ensemble.hpp"
+#include "impact/output.hpp"
+#include "impact/registry.hpp"
+#include "impact/run.hpp"
+#include "impact/scene.hpp"
+
+extern char** environ;
+
+namespace {
+
+using namespace impact;
+
+constexpr int kRepetitions = 5;
+
+// x as a TOML number that reads back as the same double.
+std::string num(double x) {
+  char buf[32];
+  return std::string(buf, format_double(buf, buf + sizeof buf, x));
+}
+
+std::string scene_path(const std::string& name) {
+  return std::string(IMPACT_SOURCE_DIR) + "/experiments/" + name + ".toml";
+}
+
+// The paper's scenes (Section 5): "figure3/no_cor" is f = 0 with one impact (almost every step
+// is free flight); "figure4/no_cor" is gravity without COR (direct ends in its period-2 chatter on
+// the floor, so about half its steps are contact steps); "figure4/cor075" bounces to rest at the
+// Zeno time t ~ 7.0 and rests on the floor (a contact step each step) until T = 10.
+const std::vector<std::string> kScenes = {"figure3/no_cor", "figure4/no_cor", "figure4/cor075"};
+
+std::string label(const std::string& scene) {
+  std::string s = scene;
+  std::replace(s.begin(), s.end(), '/', '_');
+  return s;
+}
+
+// Repeated; min and median over the repetitions. A timed benchmark first warms up for 0.05 s and
+// then runs for at least 0.2 s per repetition; a process benchmark (one run per repetition) warms
+// up by one untimed run.
+void add_statistics(benchmark::internal::Benchmark* b, bool process = false) {
+  b->Repetitions(kRepetitions)
+      ->ReportAggregatesOnly(true)
+      ->ComputeStatistics(
+          "min", [](const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); })
+      ->ComputeStatistics(
+          "max", [](const std::vector<double>& v) { return *std::max_element(v.begin(), v.end()); })
+      ->Unit(benchmark::kMillisecond);
+  if (process)
+    b->UseManualTime()->Iterations(1);
+  else
+    b->MinWarmUpTime(0.05)->MinTime(0.2);
+}
+
+// One full run of the scene per iteration, output off (the observer does nothing).
+void register_stepper(const std::string& method, const std::string& scene, double h,
+                      const std::vector<std::string>& extra = {}, const std::string& tag = "") {
+  std::vector<std::string> overrides{"method.name=" + method, "time.h=" + num(h)};
+  overrides.insert(overrides.end(), extra.begin(), extra.end());
+  const Scene s = load_scene(scene_path(scene), overrides);
+  const std::string name =
+      "stepper/" + method + (tag.empty() ? "" : "_" + tag) + "/" + label(scene);
+  auto* b = benchmark::RegisterBenchmark(name.c_str(), [s](benchmark::State& state) {
+    RunSummary summary;
+    for (auto _ : state) {
+      AnyStepper stepper = make_stepper(s);
+      summary =
+          simulate(stepper, s.initial, s.grid, [](std::int64_t, const State&, const StepInfo&) {});
+      benchmark::DoNotOptimize(summary);
+    }
+    const auto per_step =
+        benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert;
+    state.counters["s_per_step"] = benchmark::Counter(static_cast<double>(s.grid.steps), per_step);
+    if (summary.iterations > 0)
+      state.counters["s_per_iteration"] =
+          benchmark::Counter(static_cast<double>(summary.iterations), per_step);
+    state.counters["contact_fraction"] =
+        static_cast<double>(summary.contact_steps) / static_cast<double>(s.grid.steps);
+  });
+  add_statistics(b);
+}
+
+// The exact solution's own cost per impact: the time and the speed of impact k, k = 1..K, for the
+// elastic bounce under gravity (every flight as long as the first, so K impacts in K flights).
+void register_exact_impacts() {
+  auto* b = benchmark::RegisterBenchmark("exact_impacts", [](benchmark::State& state) {
+    const Model model{0.0, -9.80665, std::nullopt};
+    const ExactSolution exact(model, State{5.0, -1.0});
+    constexpr std::int64_t kImpacts = 100000;
+    for (auto _ : state) {
+      double sum = 0;
+      for (std::int64_t k = 1; k <= kImpacts; ++k)
+        sum += *exact.impact_time(k) + *exact.impact_speed(k);
+      benchmark::DoNotOptimize(sum);
+    }
+    state.counters["s_per_impact"] = benchmark::Counter(
+        kImpacts, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  });
+  add_statistics(b);
+}
+
+// A parameter sweep on the paper's Figure 4 setting: drop heights 1..10 m, v0 = -1 m/s, gravity,
+// every other particle with COR 0.75; each iteration steps a fresh ensemble over T = 10 s
+// (10^4 steps of 1e-3 s). `settled`: the same particles after 300 s instead, all at rest, where
+// those with a COR sit on a subnormal fixed point of v -> -0.75 v (v = +-2^-1073, 1.5 v rounds back
+// to 2^-1073 in magnitude): every multiply by it takes the processor's slow subnormal path.
+void register_ensemble(EnsembleMethod method, const std::string& method_name,
+                       const std::string& isa, bool settled) {
+  constexpr int kParticles = 960;
+  constexpr std::int64_t kSteps = 10000, kSettle = 300000;
+  const std::string name =
+      std::string(settled ? "ensemble_settled/" : "ensemble/") + method_name + "/" + isa;
+  auto* b = benchmark::RegisterBenchmark(name.c_str(), [=](benchmark::State& state) {
+    std::vector<Model> models(kParticles);
+    std::vector<State> initial(kParticles);
+    for (int i = 0; i < kParticles; ++i) {
+      models[i].f = -9.80665;
+      if (i % 2) models[i].cor = 0.75;
+      initial[i] = {1.0 + 9.0 * i / kParticles, -1.0};
+    }
+    const auto fresh = [&] {
+      Ensemble e(method, models, initial, 1e-3);
+      e.use(isa);
+      if (settled) e.advance(kSettle);
+      return e;
+    };
+    Ensemble ensemble = fresh();
+    for (auto _ : state) {
+      if (!settled) {
+        state.PauseTiming();
+        ensemble = fresh();
+        state.ResumeTiming();
+      }
+      ensemble.advance(kSteps);
+      benchmark::DoNotOptimize(ensemble.u().data());
+    }
+    state.counters["particle_steps_per_s"] = benchmark::Counter(
+        static_cast<double>(kParticles * kSteps), benchmark::Counter::kIsIterationInvariantRate);
+  });
+  add_statistics(b);
+}
+
+// CPU time (user + system) of one `impact run` child process.
+double run_cli(const std::vector<std::string>& args) {
+  std::vector<char*> argv;
+  for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+  pid_t pid;
+  const int err = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (err != 0) throw std::runtime_error("cannot start " + args[0]);
+  int status = 0;
+  rusage usage{};
+  if (wait4(pid, &status, 0, &usage) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw std::runtime_error("impact run failed: " + args[0] + " ... " + args.back());
+  const auto seconds = [](const timeval& t) {
+    return static_cast<double>(t.tv_sec) + 1e-6 * t.tv_usec;
+  };
+  return seconds(usage.ru_utime) + seconds(usage.ru_stime);
+}
+
+void register_cli(const std::string& cli, const std::string& out_dir, const std::string& method,
+                  const std::string& scene, std::int64_t steps, std::int64_t every,
+                  const std::string& name) {
+  const double T = load_scene(scene_path(scene)).T;
+  std::vector<std::string> args{cli,
+                                "run",
+                                scene_path(scene),
+                                "--set",
+                                "method.name=" + method,
+                                "--set",
+                                "time.h=" + num(T / static_cast<double>(steps)),
+                                "--set",
+                                "output.every=" + std::to_string(every),
+                                "--quiet",
+                                "--out",
+                                out_dir + "/cli.csv"};
+  auto warm = std::make_shared<bool>(false);
+  auto* b =
+      benchmark::RegisterBenchmark(name.c_str(), [args, steps, warm](benchmark::State& state) {
+        if (!std::exchange(*warm, true)) run_cli(args);
+        for (auto _ : state) state.SetIterationTime(run_cli(args));
+        state.counters["s_per_step"] = benchmark::Counter(
+            static_cast<double>(steps),
+            benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+      });
+  add_statistics(b, true);
+}
+
+// Collects the min and median of every benchmark while the console shows them.
+class Collector : public benchmark::ConsoleReporter {
+ public:
+  struct Result {
+    // "time_ms" (per iteration) and the counters, over the repetitions.
+    std::map<std::string, double> min, median, max;
+  };
+  void ReportRuns(const std::vector<Run>& runs) override {
+    ConsoleReporter::ReportRuns(runs);
+    for (const Run& run : runs) {
+      if (run.run_type != Run::RT_Aggregate) continue;
+      std::map<std::string, double>* into = nullptr;
+      if (run.aggregate_name == "min") into = &results_[run.run_name.function_name].min;
+      if (run.aggregate_name == "median") into = &results_[run.run_name.function_name].median;
+      if (run.aggregate_name == "max") into = &results_[run.run_name.function_name].max;
+      if (!into) continue;
+      (*into)["time_ms"] = run.GetAdjustedCPUTime();
+      if (run.run_name.function_name.rfind("cli", 0) == 0)
+        (*into)["time_ms"] = run.GetAdjustedRealTime();
+      for (const auto& [key, counter] : run.counters) (*into)[key] = counter.value;
+    }
+  }
+  const std::map<std::string, Result>& results() const { return results_; }
+
+ private:
+  std::map<std::string, Result> results_;
+};
+
+// The quantity each benchmark is judged by, in the unit of the table.
+struct Quantity {
+  std::string key, unit;
+  double scale;
+};
+
+Quantity quantity_of(const std::string& name) {
+  if (name.rfind("ensemble", 0) == 0) return {"particle_steps_per_s", "particle-steps/s", 1.0};
+  if (name == "exact_impacts") return {"s_per_impact", "ns/impact", 1e9};
+  if (name == "cli_rows") return {"s_per_step", "ns/row", 1e9};
+  return {"s_per_step", "ns/step", 1e9};
+}
+
+void write_results(const std::string& dir, const Collector& collector) {
+  std::ofstream csv(dir + "/benchmarks.csv");
+  csv << "benchmark,quantity,unit,best,median\n";
+  toml::table summary;
+  std::ofstream md(dir + "/table.md");
+  md << "| benchmark | unit | best | median |\n| --- | --- | ---: | ---: |\n";
+  for (const auto& [name, r] : collector.results()) {
+    const Quantity q = quantity_of(name);
+    const auto value = [&](const std::map<std::string, double>& m, const std::string& key) {
+      const auto it = m.find(key);
+      return it == m.end() ? std::nan("") : it->second * (key == q.key ? q.scale : 1.0);
+    };
+    // The best repetition: the largest rate, the smallest time.
+    const bool rate = q.key == "particle_steps_per_s";
+    const double best = rate ? value(r.max, q.key) : value(r.min, q.key);
+    const double median = value(r.median, q.key);
+    csv << name << "," << q.key << "," << q.unit << "," << num(best) << "," << num(median) << "\n";
+    char line[256];
+    std::snprintf(line, sizeof line, "| `%s` | %s | %.4g | %.4g |\n", name.c_str(), q.unit.c_str(),
+                  best, median);
+    md << line;
+    toml::table entry{{"unit", q.unit}, {"best", best}, {"median", median}};
+    if (r.median.count("s_per_iteration"))
+      entry.insert("ns_per_ode_step_median", r.median.at("s_per_iteration") * 1e9);
+    if (r.median.count("contact_fraction"))
+      entry.insert("contact_fraction", r.median.at("contact_fraction"));
+    summary.insert(name, entry);
+  }
+  std::ofstream(dir + "/summary.toml") << summary << "\n";
+
+  // For plot.gp: ns per step in-process and through `impact run` (1e8 steps, 1e7 for
+  // fb_newton) with the issue's targets, and the ensemble's throughput.
+  const auto best = [&](const std::string& name, double scale) {
+    const auto it = collector.results().find(name);
+    if (it == collector.results().end()) return std::nan("");
+    const auto& m = it->second.min;
+    const auto key = m.find(quantity_of(name).key);
+    return key == m.end() ? std::nan("") : key->second * scale;
+  };
+  std::ofstream steps(dir + "/plot_steps.csv");
+  steps << "case,in-process,impact run,target\n";
+  for (const auto& [method, target, cli_steps] :
+       {std::tuple{"direct", 3.0, "100000000"}, std::tuple{"moreau_jean", 4.0, "100000000"},
+        std::tuple{"fb_newton", 60.0, "10000000"}})
+    for (const auto& scene : kScenes)
+      steps << method << " " << scene << ","
+            << num(best("stepper/" + std::string(method) + "/" + label(scene), 1e9)) << ","
+            << num(best("cli/" + std::string(method) + "/" + label(scene) + "/" + cli_steps, 1e9))
+            << "," << num(target) << "\n";
+  std::ofstream ensemble(dir + "/plot_ensemble.csv");
+  ensemble << "case,T = 10 s sweep,settled (subnormal v)\n";
+  for (const auto& [name, r] : collector.results())
+    if (name.rfind("ensemble/", 0) == 0) {
+      const auto settled = collector.results().find("ensemble_settled/" + name.substr(9));
+      ensemble << name.substr(9) << "," << num(r.max.at("particle_steps_per_s")) << ","
+               << num(settled == collector.results().end()
+                          ? std::nan("")
+                          : settled->second.max.at("particle_steps_per_s"))
+               << "\n";
+    }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 3) {
+    std::fprintf(stderr, "usage: %s RESULTS_DIR IMPACT_CLI [Google Benchmark flags]\n", argv[0]);
+    return 2;
+  }
+  const std::string dir = argv[1], cli = argv[2];
+  std::filesystem::create_directories(dir);
+  argv[2] = argv[0];
+  int bench_argc = argc - 2;
+  char** bench_argv = argv + 2;
+  benchmark::Initialize(&bench_argc, bench_argv);
+  if (benchmark::ReportUnrecognizedArguments(bench_argc, bench_argv)) return 2;
+
+  // Steps of 1e-6 s: 1e7 steps over T = 10 s, enough that the loop, not the setup, is timed.
+  for (const auto& scene : kScenes) {
+    for (const char* method : {"direct", "moreau_jean", "exact"})
+      register_stepper(method, scene, 1e-6);
+    register_stepper("fb_newton", scene, 1e-5);
+  }
+  // Normal compliance (f = 0 scene only: it takes no COR) with an explicit and an implicit GSL
+  // stepper; its cost is per ODE step, the grid h only sets where it reports.
+  for (const char* stepper : {"rk8pd", "msbdf"})
+    register_stepper("penalty", "figure3/no_cor", 1e-3,
+                     {std::string("method.stepper=") + stepper, "method.stiffness=1e6",
+                      "method.rtol=1e-8", "method.atol=1e-10"},
+                     stepper);
+  register_exact_impacts();
+  for (const auto isa : Ensemble::supported_instruction_sets()) {
+    for (const bool settled : {false, true}) {
+      register_ensemble(EnsembleMethod::direct, "direct", std::string(isa), settled);
+      register_ensemble(EnsembleMethod::moreau_jean, "moreau_jean", std::string(isa), settled);
+    }
+  }
+  // `impact run` with decimated output: 1e7 and 1e8 steps (1e6 for fb_newton), ~1e4 rows each.
+  for (const auto& scene : kScenes) {
+    for (const char* method : {"direct", "moreau_jean"})
+      for (std::int64_t steps : {10'000'000LL, 100'000'000LL})
+        register_cli(
+            cli, dir, method, scene, steps, steps / 10000,
+            "cli/" + std::string(method) + "/" + label(scene) + "/" + std::to_string(steps));
+    register_cli(cli, dir, "fb_newton", scene, 10'000'000, 1000,
+                 "cli/fb_newton/" + label(scene) + "/10000000");
+  }
+  register_cli(cli, dir, "direct", "figure3/no_cor", 1'000'000, 1, "cli_rows");
+
+  Collector collector;
+  benchmark::RunSpecifiedBenchmarks(&collector);
+  benchmark::Shutdown();
+  write_results(dir, collector);
+  return 0;
+}

@@ -1,0 +1,105 @@
+#include "impact/work_precision.hpp"
+
+#include <cmath>
+#include <cstdlib>
+#include <ctime>
+#include <stdexcept>
+#include <string>
+
+#include "impact/output.hpp"
+#include "impact/registry.hpp"
+
+namespace impact {
+
+double cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+std::string_view measure_name(ErrorMeasure m) {
+  switch (m) {
+    case ErrorMeasure::sup_u:
+      return "sup_u";
+    case ErrorMeasure::l1_v:
+      return "l1_v";
+    case ErrorMeasure::energy_end:
+      return "energy_end";
+    case ErrorMeasure::first_impact:
+      return "first_impact";
+  }
+  return "";
+}
+
+double error_of(const ErrorNorms& e, ErrorMeasure m) {
+  switch (m) {
+    case ErrorMeasure::sup_u:
+      return e.sup_u;
+    case ErrorMeasure::l1_v:
+      return e.l1_v;
+    case ErrorMeasure::energy_end:
+      return e.energy_end;
+    case ErrorMeasure::first_impact:
+      return std::fabs(e.first_impact);
+  }
+  return std::nan("");
+}
+
+WorkPrecisionPoint measure_scene(const Scene& scene, const std::optional<TimingRule>& rule) {
+  WorkPrecisionPoint p = measure_point([&] { return make_stepper(scene); }, scene.model,
+                                       scene.initial, scene.grid, rule);
+  if (scene.method == "penalty") p.tolerance = MethodParams(scene).number("rtol", 0, 0, 1);
+  return p;
+}
+
+std::vector<WorkPrecisionPoint> sweep_steps(const std::string& scene_path,
+                                            const std::vector<std::string>& overrides,
+                                            const std::vector<double>& steps,
+                                            const std::optional<TimingRule>& rule) {
+  std::vector<WorkPrecisionPoint> points;
+  for (const double h : steps) {
+    std::vector<std::string> with_h = overrides;
+    char buf[32];
+    with_h.push_back("time.h=" + std::string(buf, format_double(buf, buf + sizeof buf, h)));
+    points.push_back(measure_scene(load_scene(scene_path, with_h), rule));
+  }
+  return points;
+}
+
+OrderFit observed_order(const std::vector<WorkPrecisionPoint>& points, ErrorMeasure m,
+                        double floor) {
+  std::vector<double> h, err;
+  for (const auto& p : points) {
+    const double e = error_of(p.errors, m);
+    if (e > floor) {
+      h.push_back(p.h);
+      err.push_back(e);
+    }
+  }
+  return fit_order(h, err);
+}
+
+std::optional<double> cost_to_reach(const std::vector<WorkPrecisionPoint>& points, ErrorMeasure m,
+                                    double target) {
+  std::optional<double> best;
+  for (const auto& p : points)
+    if (error_of(p.errors, m) <= target && (!best || p.cost.min < *best)) best = p.cost.min;
+  return best;
+}
+
+std::vector<double> steps_125(double h_max, double h_min) {
+  if (!(h_max >= h_min && h_min > 0))
+    throw std::invalid_argument("steps_125: need h_max >= h_min > 0");
+  std::vector<double> steps;
+  for (int exponent = static_cast<int>(std::ceil(std::log10(h_max))) + 1;; --exponent) {
+    for (const char* mantissa : {"5", "2", "1"}) {
+      // Parsed from the decimal, so that e.g. 2e-5 is the double nearest 2e-5 and not 2 * 1e-5.
+      const double h =
+          std::strtod((std::string(mantissa) + "e" + std::to_string(exponent)).c_str(), nullptr);
+      if (h < h_min * (1 - 1e-12)) return steps;
+      if (h <= h_max * (1 + 1e-12)) steps.push_back(h);
+    }
+  }
+}
+
+}  // namespace impact

@@ -1,0 +1,137 @@
+// Work against precision (issue 4): the error of a solver against the exact solution and the CPU
+// time of its solve, for a sweep of the step h (the time-steppers) or of the tolerance (penalty),
+// as DifferentialEquations.jl's work-precision sets do it: the solve alone is timed (the stepper is
+// built before the clock starts, output is off), after a warm-up, repeated; the minimum and the
+// median over the repetitions are kept.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "impact/convergence.hpp"
+#include "impact/errors.hpp"
+#include "impact/model.hpp"
+#include "impact/run.hpp"
+#include "impact/scene.hpp"
+
+namespace impact {
+
+// CPU time of this process (user + system), in seconds: what a solve costs, whatever else the
+// machine runs at the same time.
+double cpu_seconds();
+
+struct SolveCost {
+  double min = 0;     // CPU seconds of one solve: the fastest repetition
+  double median = 0;  // and the median one
+  int repetitions = 0;
+  int batch = 1;  // solves per timed repetition (short solves are timed in batches)
+};
+
+// How long to time: a warm-up, then at least min_repetitions, and more (up to max_repetitions)
+// while their total stays under budget_seconds. A solve shorter than min_sample_seconds is
+// repeated `batch` times inside one timed repetition, so that the clock's resolution and cost do
+// not dominate.
+struct TimingRule {
+  int min_repetitions = 3;
+  int max_repetitions = 9;
+  double budget_seconds = 0.05;
+  double min_sample_seconds = 2e-4;
+};
+
+// Times solve(stepper) on freshly built steppers: make() builds one (not timed).
+template <class Make>
+SolveCost time_solve(Make&& make, const State& initial, const Grid& grid, const TimingRule& rule);
+
+// The four error measures of issue 4, as measure_errors() computes them.
+enum class ErrorMeasure { sup_u, l1_v, energy_end, first_impact };
+inline constexpr ErrorMeasure kErrorMeasures[] = {
+    ErrorMeasure::sup_u, ErrorMeasure::l1_v, ErrorMeasure::energy_end, ErrorMeasure::first_impact};
+std::string_view measure_name(ErrorMeasure m);
+// The measure as a non-negative number (|first impact time error|; NaN when there is none).
+double error_of(const ErrorNorms& e, ErrorMeasure m);
+
+// One point of a work-precision diagram.
+struct WorkPrecisionPoint {
+  double h = 0;
+  double tolerance = 0;  // the rtol of an adaptive solver (penalty), 0 for a time-stepper
+  std::int64_t steps = 0;
+  ErrorNorms errors;  // against the exact solution, from one run
+  SolveCost cost;
+};
+
+// Errors from one run of a stepper built by make(), cost from time_solve() when a rule is given.
+template <class Make>
+WorkPrecisionPoint measure_point(Make&& make, const Model& model, const State& initial,
+                                 const Grid& grid, const std::optional<TimingRule>& rule) {
+  WorkPrecisionPoint p;
+  p.h = grid.h;
+  p.steps = grid.steps;
+  auto stepper = make();
+  p.errors = measure_errors(stepper, model, initial, grid);
+  if (rule) p.cost = time_solve(make, initial, grid, *rule);
+  return p;
+}
+
+// One point for the scene as it stands (its method, h and [method] keys): errors always, the cost
+// only when a timing rule is given (the tests measure errors only).
+WorkPrecisionPoint measure_scene(const Scene& scene, const std::optional<TimingRule>& rule);
+
+// A curve: the scene file with `overrides` (e.g. "method.name=direct") at each step h.
+std::vector<WorkPrecisionPoint> sweep_steps(const std::string& scene_path,
+                                            const std::vector<std::string>& overrides,
+                                            const std::vector<double>& steps,
+                                            const std::optional<TimingRule>& rule);
+
+// The observed order of a measure over a curve: the least-squares slope of log error against
+// log h (convergence.hpp's fit_order) over the points whose error is above `floor` (below it the
+// error is rounding, not discretisation).
+OrderFit observed_order(const std::vector<WorkPrecisionPoint>& points, ErrorMeasure m,
+                        double floor = 1e-13);
+
+// The least cost (min over repetitions) among the points whose error is at most `target`.
+std::optional<double> cost_to_reach(const std::vector<WorkPrecisionPoint>& points, ErrorMeasure m,
+                                    double target);
+
+// Step sizes 1, 2 and 5 times the powers of ten from h_max down to h_min (e.g. 0.1, 0.05, 0.02,
+// 0.01, ...), the doubles nearest those decimals: T / h is a whole number for the paper's T = 10
+// and the impact at t = 5 of Figure 3 lies on every grid.
+std::vector<double> steps_125(double h_max, double h_min);
+
+// --- implementation of the templates ---
+
+template <class Make>
+SolveCost time_solve(Make&& make, const State& initial, const Grid& grid, const TimingRule& rule) {
+  const auto no_output = [](std::int64_t, const State&, const StepInfo&) {};
+  // One timed repetition: `batch` solves on steppers built before the clock starts.
+  const auto repetition = [&](int batch) {
+    std::vector<decltype(make())> steppers;
+    steppers.reserve(static_cast<std::size_t>(batch));
+    for (int i = 0; i < batch; ++i) steppers.push_back(make());
+    const double start = cpu_seconds();
+    for (auto& stepper : steppers) simulate(stepper, initial, grid, no_output);
+    return cpu_seconds() - start;
+  };
+  SolveCost cost;
+  // The warm-up also finds the batch.
+  while (repetition(cost.batch) < rule.min_sample_seconds && cost.batch < (1 << 20))
+    cost.batch *= 2;
+  std::vector<double> times;
+  double total = 0;
+  while (static_cast<int>(times.size()) < rule.min_repetitions ||
+         (static_cast<int>(times.size()) < rule.max_repetitions && total < rule.budget_seconds)) {
+    times.push_back(repetition(cost.batch) / cost.batch);
+    total += times.back() * cost.batch;
+  }
+  std::sort(times.begin(), times.end());
+  cost.repetitions = static_cast<int>(times.size());
+  cost.min = times.front();
+  const std::size_t n = times.size();
+  cost.median = n % 2 ? times[n / 2] : 0.5 * (times[n / 2 - 1] + times[n / 2]);
+  return cost;
+}
+
+}  // namespace impact
