@@ -5,6 +5,7 @@
 
 #include "impact/free_flight.hpp"
 #include "impact/model.hpp"
+#include "impact/restitution.hpp"
 
 namespace impact {
 
@@ -39,8 +40,9 @@ void direct_step(DirectLanes<Real>& s, const Real& phi, const Real& f, const Rea
   // N^l = (2/h)((phi - u^l)/h - v^l) - f = (2/h^2)(phi - u_free) >= 0.
   const Real force = 2 / (h * h) * (phi - u_free);
   const Real v_scheme = v_free + h * force;  // (4-1), equal to (4-2) here
-  // The COR law of restitution.hpp: v^{l+1} = -COR v^l on a contact step, else the scheme's own.
-  const Real v_contact = has_cor ? -cor * s.v : v_scheme;
+  // The COR law of restitution.hpp: v^{l+1} = -COR v^l on a step with N^l > 0.
+  Real v_contact;
+  velocity_after_step(has_cor, cor, force > 0, s.v, v_scheme, v_contact);
   s.contact_force = free ? Real{} : force;
   s.u = free ? u_free : phi;
   s.v = free ? v_free : v_contact;

@@ -144,8 +144,11 @@ StepInfo FbNewton::step(State& s, std::int64_t l) {
     flight_.accept(l + 1, gap_, true);
   } else {
     const double v_scheme = free.v + h * b;  // (4-1), equal to (4-2) at the solution
-    // On the force branch of the complementarity pair (b > a) the step ends in contact.
-    gap_ = {x, b > x ? velocity_after_contact(model_, s.v, v_scheme) : v_scheme};
+    // The COR law acts where the unsmoothed (4-3) has N^l > 0, i.e. where the free flight ends
+    // below the floor: the same steps as in direct, not those the smoothing alone pushes.
+    gap_.u = x;
+    velocity_after_step(model_.cor.has_value(), model_.cor.value_or(0.0), x_free < 0, s.v,
+                        v_scheme, gap_.v);
     flight_.accept(l + 1, gap_, false);
   }
   s = {phi + gap_.u, gap_.v};

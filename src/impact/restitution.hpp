@@ -1,17 +1,21 @@
 // Section 5.2: "we must alter the velocity at the instant that the particle is in contact with the
-// surface", COR = -v_a / v_b. Read as (paper_notes/restitution.md): on a step that ends in contact,
-// the contact force N^l stays the one the complementarity solve gives (the paper says COR "has no
-// effect on the results of the contact force"), and the velocity after the step is overwritten by
-// v^{l+1} = -COR v^l, with v_b = v^l the last velocity before contact. Without COR the scheme's own
-// velocity (4-2) is kept.
+// surface", COR = -v_a / v_b. Read as (paper_notes/restitution.md): on a step whose complementarity
+// solve gives a contact force, N^l > 0, the force stays the one the solve gives (the paper says COR
+// "has no effect on the results of the contact force"), and the velocity after the step is
+// overwritten by v^{l+1} = -COR v^l, with v_b = v^l the last velocity before contact. A step that
+// ends exactly on the floor with N^l = 0 is not an impact yet: the impulse, and the COR, come in the
+// next step, as without COR. Without COR the scheme's own velocity (4-2) is kept.
 #pragma once
-
-#include "impact/model.hpp"
 
 namespace impact {
 
-inline double velocity_after_contact(const Model& model, double v_before, double v_scheme) {
-  return model.cor ? -*model.cor * v_before : v_scheme;
+// Real is double (Mask = bool) or a vector of lanes (Mask its comparison result), so that direct
+// and its ensemble share this one rule (see direct.hpp). The result is written through `v_after`
+// because a function returning a vector type would change the ABI between instruction sets.
+template <class Real, class Mask>
+void velocity_after_step(const Mask& has_cor, const Real& cor, const Mask& contact_force_positive,
+                         const Real& v_before, const Real& v_scheme, Real& v_after) {
+  v_after = (has_cor & contact_force_positive) ? -cor * v_before : v_scheme;
 }
 
 }  // namespace impact
