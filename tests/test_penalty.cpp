@@ -129,7 +129,7 @@ TEST_CASE("penalty: N^l >= 0 and h sum N^l = v(T) - v(0) - f T, with gravity and
   }
 }
 
-TEST_CASE("penalty: the penetration depth falls like 1/sqrt(c_N)", "[penalty]") {
+TEST_CASE("penalty: the penetration depth falls like 1/sqrt(c_N)", "[penalty][claim]") {
   // From the floor with v0 = -1 and h a sixteenth of the contact, so that the grid hits the
   // deepest point (l = 8) and the exit (l = 16).
   const Model model{0.0, 0.0, {}};
@@ -281,4 +281,20 @@ TEST_CASE("penalty: read_params reads stiffness, stepper, rtol and atol within t
     }
   }
   CHECK_THAT(read_error("stifness = 1e8\n"), Contains("stiffness") && Contains("stepper"));
+}
+
+TEST_CASE("error in the paper: N = c_N max(u - phi, 0) would push a particle above the floor: "
+          "penalty uses c_N max(phi - u, 0)",
+          "[penalty][claim]") {
+  // Section 5 writes N = p(u - phi), p(r) = c_N max(r, 0): at u = 5 above a floor at 0 that is a
+  // force c_N * 5 > 0 on a free particle. The physical law acts only on penetration.
+  const double c_N = 1e6, h = 1e-3;
+  const Model model{0.0, 0.0, {}};
+  const double printed_law_at_u5 = c_N * std::fmax(5.0 - model.phi, 0.0);
+  CHECK(printed_law_at_u5 > 0);
+  Penalty pen(model, h, PenaltyParams{c_N, "rk8pd", 1e-10, 1e-12});
+  State above{5.0, -1.0};
+  CHECK(pen.step(above, 0).contact_force == 0.0);  // in free flight the compliance force is 0
+  State penetrating{-1e-4, -1.0};
+  CHECK(pen.step(penetrating, 0).contact_force > 0.0);  // it pushes back on penetration
 }

@@ -52,7 +52,7 @@ Scene paper_scene(const std::string& file, const std::string& method) {
 }  // namespace
 
 TEST_CASE("direct is exact in free flight and delays a grid-aligned impact by one step",
-          "[direct][exact]") {
+          "[direct][exact][claim]") {
   // Between contacts (4-1)-(4-2) is exact for a constant force, so up to the first contact the
   // scheme equals the exact parabola. With f = 0 and h = 2^-10 every u^l = 5 - l h is exact in
   // binary and the floor is met exactly at t* = 5 = 5120 h. The step ending at t* has
@@ -129,7 +129,7 @@ Difference max_difference(const std::vector<Row>& a, const std::vector<Row>& b, 
 
 TEST_CASE("direct and fb_newton agree step by step on the paper's scenes, except where the "
           "scheme without COR amplifies the smoothing by 2/h at each impact",
-          "[direct][fb_newton]") {
+          "[direct][fb_newton][claim]") {
   const double sqrt_eps = std::sqrt(1e-15);  // the paper's smoothing, the fb_newton default
   SECTION("Figure 3: the grid-aligned impact meets the kink of F_eps") {
     for (std::string file : {"figure3/no_cor.toml", "figure3/cor075.toml"}) {
@@ -172,7 +172,7 @@ TEST_CASE("direct and fb_newton agree step by step on the paper's scenes, except
 }
 
 TEST_CASE("discrete invariants of Section 4 hold on seeded random scenes",
-          "[direct][fb_newton][invariants]") {
+          "[direct][fb_newton][invariants][claim]") {
   std::mt19937_64 rng(20130401);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   for (int trial = 0; trial < 60; ++trial) {
@@ -235,5 +235,26 @@ TEST_CASE("discrete invariants of Section 4 hold on seeded random scenes",
           4 * kEps * static_cast<double>(rows.size()) * (max_v + std::fabs(f_used) * Tn);
       CHECK(impulse == Approx(rows.back().s.v - v_start - f_used * Tn).margin(tol));
     }
+  }
+}
+
+TEST_CASE("reading of (5-3): eps belongs inside the square root, so a contact step of fb_newton "
+          "satisfies (u - phi) N = eps/2",
+          "[fb_newton][claim]") {
+  // F_eps(a, b) = a + b - sqrt(a^2 + b^2 + eps) = 0 iff a + b > 0 and a b = eps/2. With eps
+  // outside the root, a + b - sqrt(a^2 + b^2) = eps, the pair would need a b = eps (a + b) +
+  // eps^2/2 instead. A larger eps makes the product measurable above round-off.
+  const double eps = 1e-6, h = 1e-3;
+  Model model;
+  model.f = -9.80665;
+  FbNewtonParams params;
+  params.epsilon = eps;
+  FbNewton fb(model, h, params);
+  State s{0.0, 0.0};  // resting on the floor: every step is a contact step with N close to -f
+  for (std::int64_t l = 0; l < 10; ++l) {
+    const StepInfo info = fb.step(s, l);
+    REQUIRE(info.converged);
+    INFO("l = " << l << ", a = " << s.u << ", N = " << info.contact_force);
+    CHECK(s.u * info.contact_force == Approx(eps / 2).epsilon(1e-6));
   }
 }
