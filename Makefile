@@ -12,7 +12,7 @@ RESULTS := results
 EXPERIMENTS :=
 include $(wildcard experiments/*/experiment.mk)
 
-.PHONY: all deps configure build test clean experiments claims help $(EXPERIMENTS) $(EXPERIMENTS:%=run-%)
+.PHONY: all deps configure build tools test clean experiments claims help $(EXPERIMENTS) $(EXPERIMENTS:%=run-%)
 .DEFAULT_GOAL := help
 
 help:
@@ -20,10 +20,14 @@ help:
 	@echo "make test         install what is missing, build, run the test suite (ctest)"
 	@echo "make <experiment> run one experiment and plot its figure; experiments: $(EXPERIMENTS)"
 	@echo "make claims       print the claims ledger's verdicts with the latest measured numbers"
-	@echo "make build        configure and build only ($(BUILD)/impact and the drivers)"
+	@echo "make build        configure and build everything, tests included"
+	@echo "make performance  Google Benchmark throughput (ns per step) and the ensemble; not in all"
 	@echo "make clean        remove $(BUILD)/ and $(RESULTS)/"
+	@echo "make asan-test    the test suite under AddressSanitizer + UBSan, in $(ASAN_BUILD)/"
+	@echo "make fuzz         fuzz the scene reader and --set for $(FUZZ_SECONDS) s (clang); fuzz-long: 30 min"
+	@echo "make determinism  check that an -O0 build writes the same bytes as $(BUILD)/"
 
-all: build
+all: tools
 	@$(MAKE) --no-print-directory experiments
 
 deps:
@@ -35,6 +39,10 @@ configure: deps
 build: configure
 	@cmake --build $(BUILD) -j $(JOBS)
 
+# What the experiments run (the CLI, the claims tool, the drivers), without the test suite.
+tools: configure
+	@cmake --build $(BUILD) -j $(JOBS) --target impact_experiments
+
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
@@ -42,15 +50,51 @@ test: build
 # <name>_OUTPUTS with real file dependencies, so a second `make all` redoes nothing.
 experiments: $(EXPERIMENTS:%=run-%)
 
-$(EXPERIMENTS): build
+$(EXPERIMENTS): tools
 	@$(MAKE) --no-print-directory run-$@
 
 .SECONDEXPANSION:
 $(EXPERIMENTS:%=run-%): run-%: $$($$*_OUTPUTS)
 
 # The claims ledger's verdict table with the numbers of the latest results.
-claims: build
+claims: tools
 	@$(BUILD)/impact-claims paper_notes/claims.md $(RESULTS)
 
 clean:
 	rm -rf $(BUILD) $(BUILD).configure.log $(RESULTS)
+
+# Hardening (tests/README.md): the test suite under AddressSanitizer and UBSan, the libFuzzer
+# target of the scene reader and --set (tests/fuzz; clang is installed for it only), and
+# byte-identical output from an -O0 build (a second build, so a script rather than a ctest).
+ASAN_BUILD ?= build-asan
+FUZZ_BUILD ?= build-fuzz
+O0_BUILD ?= build-O0
+FUZZ_SECONDS ?= 60
+.PHONY: asan-test fuzz fuzz-long determinism
+
+asan-test: deps
+	@cmake -S . -B $(ASAN_BUILD) $(CMAKE_FLAGS) -DIMPACT_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	  > $(ASAN_BUILD).configure.log 2>&1 || { cat $(ASAN_BUILD).configure.log; exit 1; }
+	@cmake --build $(ASAN_BUILD) -j $(JOBS)
+	cd $(ASAN_BUILD) && ctest --output-on-failure -j $(JOBS)
+
+fuzz:
+	@IMPACT_EXTRA_PACKAGES="clang libclang-rt-14-dev" bash .ci/deps.sh
+	@CXX=clang++ cmake -S . -B $(FUZZ_BUILD) -DIMPACT_FUZZ=ON -DIMPACT_BUILD_TESTS=OFF \
+	  -DCMAKE_BUILD_TYPE=Debug "-DCMAKE_CXX_FLAGS_DEBUG=-g -O1" \
+	  > $(FUZZ_BUILD).configure.log 2>&1 || { cat $(FUZZ_BUILD).configure.log; exit 1; }
+	@cmake --build $(FUZZ_BUILD) --target fuzz_scene -j $(JOBS)
+	@bash tests/fuzz/seeds.sh $(FUZZ_BUILD)/seeds
+	@mkdir -p $(FUZZ_BUILD)/corpus $(FUZZ_BUILD)/findings
+	$(FUZZ_BUILD)/tests/fuzz/fuzz_scene -max_total_time=$(FUZZ_SECONDS) -dict=tests/fuzz/scene.dict \
+	  -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix=$(FUZZ_BUILD)/findings/ \
+	  $(FUZZ_BUILD)/corpus $(FUZZ_BUILD)/seeds
+
+fuzz-long:
+	@$(MAKE) --no-print-directory fuzz FUZZ_SECONDS=1800
+
+determinism: build
+	@cmake -S . -B $(O0_BUILD) $(CMAKE_FLAGS) -DCMAKE_BUILD_TYPE=Debug -DIMPACT_BUILD_TESTS=OFF \
+	  > $(O0_BUILD).configure.log 2>&1 || { cat $(O0_BUILD).configure.log; exit 1; }
+	@cmake --build $(O0_BUILD) --target impact_cli -j $(JOBS)
+	bash tests/determinism.sh $(BUILD) $(O0_BUILD)

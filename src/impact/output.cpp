@@ -1,13 +1,17 @@
 #include "impact/output.hpp"
 
+#include <limits.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <charconv>
+#include <cmath>
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
+
+#include "impact/run.hpp"
 
 namespace impact {
 namespace {
@@ -22,8 +26,26 @@ extern "C" void remove_temp_and_exit(int sig) {
   std::raise(sig);
 }
 
+// Installs the handler unless the signal is ignored: a script's background job ignores SIGINT, and
+// the user's Ctrl-C is not meant for it.
+void remove_temp_on(int sig) {
+  struct sigaction old {};
+  if (sigaction(sig, nullptr, &old) == 0 && old.sa_handler == SIG_IGN) return;
+  std::signal(sig, remove_temp_and_exit);
+}
+
 std::string why() {
   return std::strerror(errno);
+}
+
+// The file a path names after following symbolic links, so that the output replaces the file a
+// link points to and not the link; the path itself if it does not exist (yet).
+std::string resolve_links(const std::string& path) {
+  char* real = realpath(path.c_str(), nullptr);
+  if (!real) return path;
+  std::string resolved = real;
+  std::free(real);
+  return resolved;
 }
 
 }  // namespace
@@ -34,18 +56,34 @@ AtomicFile::AtomicFile(const std::string& path) : path_(path) {
     return;
   }
   struct stat info;
-  if (stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode))
+  const bool exists = stat(path.c_str(), &info) == 0;
+  if (exists && S_ISDIR(info.st_mode))
     throw OutputError(path + ": --out names a directory; give a file name", true);
-  std::string pattern = path + ".tmp.XXXXXX";
+  if (exists && !S_ISREG(info.st_mode)) {
+    // A device or a pipe: write to it in place (it cannot hold a half-written file anyway).
+    stream_ = std::fopen(path.c_str(), "w");
+    if (!stream_) throw OutputError(path + ": cannot open the output file: " + why(), true);
+    return;
+  }
+  const std::string target = resolve_links(path);
+  // The temporary lives beside the target (rename is atomic only within one file system); its
+  // name is the target's, cut so that the suffix still fits in NAME_MAX.
+  constexpr std::size_t kSuffix = sizeof ".tmp.XXXXXX" - 1;
+  const std::size_t slash = target.rfind('/');
+  const std::size_t base = slash == std::string::npos ? 0 : slash + 1;
+  std::string pattern =
+      target.substr(0, base) + target.substr(base, NAME_MAX - kSuffix) + ".tmp.XXXXXX";
   std::vector<char> name(pattern.begin(), pattern.end());
   name.push_back('\0');
   int fd = mkstemp(name.data());
   if (fd < 0) throw OutputError(path + ": cannot create the output file: " + why(), true);
   temp_ = name.data();
-  // mkstemp makes the file 0600; give it the permissions a plain fopen would.
+  target_ = target;
+  // mkstemp makes the file 0600: keep the mode of the file being replaced, or give a new one the
+  // permissions a plain fopen would.
   mode_t mask = umask(0);
   umask(mask);
-  fchmod(fd, 0666 & ~mask);
+  fchmod(fd, exists ? info.st_mode & 07777 : 0666 & ~mask);
   stream_ = fdopen(fd, "w");
   if (!stream_) {
     close(fd);
@@ -56,25 +94,35 @@ AtomicFile::AtomicFile(const std::string& path) : path_(path) {
   std::setvbuf(stream_, buffer_.data(), _IOFBF, buffer_.size());
   if (temp_.size() < sizeof g_temp_path) {
     std::memcpy(g_temp_path, temp_.c_str(), temp_.size() + 1);
-    std::signal(SIGINT, remove_temp_and_exit);
-    std::signal(SIGTERM, remove_temp_and_exit);
+    for (int sig : {SIGINT, SIGTERM, SIGHUP}) remove_temp_on(sig);
   }
 }
 
 AtomicFile::~AtomicFile() {
-  if (temp_.empty()) {
-    if (stream_) std::fflush(stream_);
+  if (stream_ == stdout) {
+    std::fflush(stream_);
+    return;
+  }
+  if (temp_.empty()) {  // a device or pipe written in place
+    if (stream_) std::fclose(stream_);
     return;
   }
   if (!committed_) {
     if (stream_) std::fclose(stream_);
     unlink(temp_.c_str());
   }
-  g_temp_path[0] = '\0';
+  if (temp_ == g_temp_path) g_temp_path[0] = '\0';
+}
+
+void AtomicFile::check() const {
+  if (stream_ && std::ferror(stream_))
+    throw OutputError(
+        (stream_ == stdout ? std::string("standard output") : path_) + ": write failed: " + why(),
+        false);
 }
 
 void AtomicFile::commit() {
-  if (temp_.empty()) {
+  if (stream_ == stdout) {
     if (std::fflush(stream_) != 0 || std::ferror(stream_))
       throw OutputError("standard output: write failed: " + why(), false);
     return;
@@ -87,7 +135,8 @@ void AtomicFile::commit() {
     errno = err ? err : errno;
     throw OutputError(path_ + ": write failed: " + why(), false);
   }
-  if (std::rename(temp_.c_str(), path_.c_str()) != 0)
+  if (temp_.empty()) return;  // written in place
+  if (std::rename(temp_.c_str(), target_.c_str()) != 0)
     throw OutputError(path_ + ": cannot move the output into place: " + why(), false);
   committed_ = true;
 }
@@ -110,6 +159,7 @@ void CsvWriter::header() {
 }
 
 void CsvWriter::row(double t, const State& s, const StepInfo& info) {
+  // At most 1 + 5 fields of 24 characters (-1.2345678901234567e-308) and their separators.
   char buf[256];
   char* p = format_double(buf, buf + sizeof buf, t);
   for (Channel c : channels_) {
@@ -124,9 +174,16 @@ void CsvWriter::row(double t, const State& s, const StepInfo& info) {
       case Channel::N:
         p = format_double(p, buf + sizeof buf, info.contact_force);
         break;
-      case Channel::E:
-        p = format_double(p, buf + sizeof buf, energy(model_, s));
+      case Channel::E: {
+        const double E = energy(model_, s);
+        if (!std::isfinite(E)) [[unlikely]] {
+          char when[32];
+          throw NumericalError("at t = " + std::string(when, format_double(when, when + 32, t)) +
+                               ": the energy v^2/2 - f u (3-1) overflows (u and v are finite)");
+        }
+        p = format_double(p, buf + sizeof buf, E);
         break;
+      }
       case Channel::iterations:
         p = std::to_chars(p, buf + sizeof buf, info.iterations).ptr;
         break;

@@ -21,7 +21,10 @@ class OutputError : public std::runtime_error {
   bool bad_path;
 };
 
-// A file that appears at `path` only on commit(); "-" or "" means standard output.
+// A file that appears at `path` only on commit(); "-" or "" means standard output. A symbolic link
+// is followed (the file it names is replaced, the link stays). A path that names something other
+// than a regular file, e.g. /dev/null or a named pipe, is written directly: renaming over it would
+// replace the device or pipe itself.
 class AtomicFile {
  public:
   explicit AtomicFile(const std::string& path);
@@ -30,13 +33,35 @@ class AtomicFile {
   ~AtomicFile();  // removes the temporary file unless committed
 
   std::FILE* stream() { return stream_; }
+  // Throws OutputError if a write has failed so far (e.g. the disk is full), so that a long run
+  // can stop early instead of computing output that cannot be stored.
+  void check() const;
   void commit();
 
  private:
-  std::string path_, temp_;
+  std::string path_;    // as given, for messages
+  std::string target_;  // the file that commit() replaces: path_ with symbolic links followed
+  std::string temp_;
   std::FILE* stream_ = nullptr;
   std::vector<char> buffer_;
   bool committed_ = false;
+};
+
+// Which steps get a row: l = 0, every, 2 every, ... and always the last step. Comparing l with the
+// next row's index instead of computing l % every keeps the division out of the step loop; every is
+// capped at `last` so that the next index cannot overflow (output.every may be up to 2^63 - 1).
+class RowSchedule {
+ public:
+  RowSchedule(std::int64_t every, std::int64_t last)
+      : every_(every < last ? every : (last > 0 ? last : 1)), last_(last) {}
+  bool due(std::int64_t l) {
+    if (l != next_ && l != last_) return false;
+    next_ = l + every_;
+    return true;
+  }
+
+ private:
+  std::int64_t every_, last_, next_ = 0;
 };
 
 // Writes the header `t,<channels>` and one row per written step.
@@ -44,6 +69,7 @@ class CsvWriter {
  public:
   CsvWriter(std::FILE* out, const Model& model, std::vector<Channel> channels);
   void header();
+  // Throws NumericalError if the energy channel overflows (u and v finite, v^2/2 - f u not).
   void row(double t, const State& s, const StepInfo& info);
 
  private:

@@ -1,7 +1,16 @@
 #include "impact/scene.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <limits>
 #include <sstream>
 
@@ -13,17 +22,153 @@ namespace {
 // 2^53: the largest step count for which every l and l*h are exact in double precision.
 constexpr double kMaxSteps = 9007199254740992.0;
 
+// A scene is a few hundred bytes; a file this large is not one (and /dev/zero would never end).
+constexpr std::size_t kMaxSceneBytes = std::size_t{1} << 20;
+
+// A key as typed, with control characters shown as \xNN, so that a message cannot send escape
+// sequences to the terminal.
+std::string printable(std::string_view key) {
+  std::string out;
+  for (unsigned char c : key) {
+    if (c < 0x20 || c == 0x7f) {
+      char hex[5];
+      std::snprintf(hex, sizeof hex, "\\x%02x", c);
+      out += hex;
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return out;
+}
+
 // The shortest decimal that reads back as x (1e-15, not toml++'s 1.0000000000000001e-15).
+// Where the first non-ASCII byte outside a comment is, or npos. toml++ 3.3 classifies a non-ASCII
+// character wherever whitespace may follow (between tokens, in keys and values, after a
+// line-ending backslash) with a lookup that reaches __builtin_unreachable for many code points,
+// e.g. U+00A1..U+0499 (toml++ issues #190 and #295): undefined behaviour in the packaged library,
+// found by tests/fuzz. A scene's keys and values are ASCII anyway, so a scene may use other
+// characters only in comments, where toml++ checks nothing but control characters and surrogates.
+// The states follow TOML's strings (basic with escapes, literal, and their multi-line forms).
+std::size_t find_non_ascii_outside_comments(std::string_view text) {
+  enum class In { code, comment, basic, literal, multiline_basic, multiline_literal };
+  In in = In::code;
+  const auto non_ascii = [&](std::size_t i) {
+    return i < text.size() && static_cast<unsigned char>(text[i]) >= 0x80;
+  };
+  const auto quotes_at = [&](std::size_t i, char q) {
+    std::size_t n = 0;
+    while (i + n < text.size() && text[i + n] == q) ++n;
+    return n;
+  };
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (in != In::comment && non_ascii(i)) return i;
+    switch (in) {
+      case In::code:
+        if (c == '#') {
+          in = In::comment;
+        } else if (c == '"' || c == '\'') {
+          const bool triple = quotes_at(i, c) >= 3;
+          if (c == '"') in = triple ? In::multiline_basic : In::basic;
+          if (c == '\'') in = triple ? In::multiline_literal : In::literal;
+          if (triple) i += 2;
+        }
+        break;
+      case In::comment:
+        if (c == '\n') in = In::code;
+        break;
+      case In::basic:
+      case In::multiline_basic:
+        if (c == '\\') {  // the escaped character is inside the string too
+          if (non_ascii(i + 1)) return i + 1;
+          ++i;
+        } else if (c == '\n' && in == In::basic) {
+          in = In::code;  // an unterminated string: toml++ reports it
+        } else if (c == '"' && (in == In::basic || quotes_at(i, c) >= 3)) {
+          // A multi-line string may end in up to two quotes of its own before the closing three.
+          if (in == In::multiline_basic) i += std::min<std::size_t>(quotes_at(i, c), 5) - 1;
+          in = In::code;
+        }
+        break;
+      case In::literal:
+      case In::multiline_literal:
+        if (c == '\n' && in == In::literal) {
+          in = In::code;
+        } else if (c == '\'' && (in == In::literal || quotes_at(i, c) >= 3)) {
+          if (in == In::multiline_literal) i += std::min<std::size_t>(quotes_at(i, c), 5) - 1;
+          in = In::code;
+        }
+        break;
+    }
+  }
+  return std::string_view::npos;
+}
+
 std::string show_number(double x) {
   char buf[64];
   return std::string(buf, std::to_chars(buf, buf + sizeof buf, x).ptr);
 }
 
-std::string show(const toml::node& node) {
-  if (const toml::value<double>* x = node.as_floating_point()) return show_number(x->get());
-  std::ostringstream out;
-  node.visit([&](auto&& v) { out << v; });
-  return out.str();
+// A string value in TOML syntax: 'literal' when it can be, else "basic" with escapes.
+std::string show_string(std::string_view text) {
+  bool literal = true;
+  for (unsigned char c : text) literal = literal && c >= 0x20 && c != 0x7f && c != '\'';
+  if (literal) return "'" + std::string(text) + "'";
+  std::string out = "\"";
+  for (unsigned char c : text) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += static_cast<char>(c);
+    } else if (c < 0x20 || c == 0x7f) {
+      char escape[8];
+      std::snprintf(escape, sizeof escape, "\\u%04x", c);
+      out += escape;
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return out + "\"";
+}
+
+// Messages show at most this much of a value.
+constexpr std::size_t kShowLimit = 200;
+
+// A value as it would be written in TOML, for messages. Written here, not by toml++: its formatter
+// lays out arrays by converting log10 of each number to size_t, which is undefined for nan, inf,
+// |x| < 0.1 and INT64_MIN (found by tests/fuzz), and classifies non-ASCII characters of strings
+// with the lookup of find_non_ascii_outside_comments().
+std::string show(const toml::node& node, int depth = 0) {
+  std::string out;
+  if (const auto* x = node.as_floating_point()) {
+    out = show_number(x->get());
+  } else if (const auto* i = node.as_integer()) {
+    out = std::to_string(i->get());
+  } else if (const auto* b = node.as_boolean()) {
+    out = b->get() ? "true" : "false";
+  } else if (const auto* str = node.as_string()) {
+    out = show_string(str->get());
+  } else if (const auto* array = node.as_array()) {
+    out = "[";
+    for (const toml::node& item : *array) {
+      if (out.size() > kShowLimit) break;
+      out += (out.size() > 1 ? ", " : "") + (depth < 8 ? show(item, depth + 1) : "...");
+    }
+    out += "]";
+  } else if (const auto* table = node.as_table()) {
+    out = "{";
+    for (auto&& [key, value] : *table) {
+      if (out.size() > kShowLimit) break;
+      out += (out.size() > 1 ? ", " : "") + printable(key.str()) + " = " +
+             (depth < 8 ? show(value, depth + 1) : "...");
+    }
+    out += "}";
+  } else {  // a date, time or date-time: digits and separators only
+    std::ostringstream text;
+    node.visit([&](auto&& v) { text << v; });
+    out = text.str();
+  }
+  if (out.size() > kShowLimit) out = out.substr(0, kShowLimit) + "...";
+  return out;
 }
 
 std::string join(const std::vector<std::string_view>& names) {
@@ -52,9 +197,9 @@ class Reader {
       for (auto a : allowed) known = known || a == key.str();
       if (!known) {
         if (where.empty())
-          fail(std::string(key.str()), "unknown table (allowed: " + join(allowed) + ")");
+          fail(printable(key.str()), "unknown table (allowed: " + join(allowed) + ")");
         // A key also shows its value, which helps to spot what the typo meant.
-        fail_value(std::string(where) + "." + std::string(key.str()), node,
+        fail_value(std::string(where) + "." + printable(key.str()), node,
                    "unknown key (allowed in [" + std::string(where) + "]: " + join(allowed) + ")");
       }
     }
@@ -118,13 +263,23 @@ void apply_override(toml::table& root, const std::string& assignment, const std:
   toml::table* table = root[tname].as_table();
   if (!table) fail("[" + tname + "] is not a table");
 
+  if (find_non_ascii_outside_comments(value) != std::string_view::npos)
+    fail("the value '" + value + "' has a non-ASCII character (a scene's values are ASCII)");
   // A TOML value (number, boolean, string, array); a bare word is read as a string.
   try {
     toml::table parsed = toml::parse("value = " + value);
+    // One value, not a value and more TOML after it ("0.01\nT = 5" would set time.T too).
+    if (parsed.size() != 1) fail("the value '" + value + "' is not a single TOML value");
     table->insert_or_assign(key, *parsed.get("value"));
-  } catch (const toml::parse_error&) {
-    if (value.empty() || value.find_first_of("\"'[]{}=\n") != std::string::npos)
-      fail("the value '" + value + "' is not a TOML value");
+  } catch (const toml::parse_error& e) {
+    // A bare word is a name (method, stepper, channel): a letter, then letters, digits, _ - or .;
+    // anything else (1e400, [1,) is a malformed value, with toml++'s reason.
+    const bool word = !value.empty() && std::isalpha(static_cast<unsigned char>(value[0])) &&
+                      std::all_of(value.begin(), value.end(), [](unsigned char c) {
+                        return std::isalnum(c) || c == '_' || c == '-' || c == '.';
+                      });
+    if (!word)
+      fail("the value '" + value + "' is not a TOML value (" + std::string(e.description()) + ")");
     table->insert_or_assign(key, value);
   }
 }
@@ -223,8 +378,75 @@ Scene build(toml::table root, const std::string& source) {
       }
     }
   }
+  for (Channel c : scene.output.channels)
+    if (c == Channel::E && !std::isfinite(energy(scene.model, scene.initial)))
+      r.fail("output.channels",
+             "E: the initial energy v0^2/2 - f u0 (3-1) is beyond the double range (v0 = " +
+                 show_number(scene.initial.v) + ", f = " + show_number(scene.model.f) +
+                 ", u0 = " + show_number(scene.initial.u) + ")");
   scene.document = std::move(root);
   return scene;
+}
+
+// The TOML document, or SceneError with the parser's message and the line and column it names.
+toml::table parse_toml(std::string_view text, const std::string& source) {
+  if (const std::size_t at = find_non_ascii_outside_comments(text); at != std::string_view::npos) {
+    // Line and column as toml++ counts them: the column in characters, not bytes.
+    const std::size_t newline = text.rfind('\n', at);
+    const std::size_t line_start = newline == std::string_view::npos ? 0 : newline + 1;
+    const std::size_t line =
+        1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + at, '\n'));
+    std::size_t column = 1;
+    for (std::size_t i = line_start; i < at; ++i)
+      column += (static_cast<unsigned char>(text[i]) & 0xC0) != 0x80;  // not a continuation byte
+    char byte[8];
+    std::snprintf(byte, sizeof byte, "0x%02x", static_cast<unsigned char>(text[at]));
+    throw SceneError(source + ":" + std::to_string(line) + ":" + std::to_string(column) +
+                     ": not a valid scene: non-ASCII byte " + byte +
+                     " outside a comment (a scene's keys and values are ASCII)");
+  }
+  try {
+    return toml::parse(text, source);
+  } catch (const toml::parse_error& e) {
+    std::ostringstream msg;
+    msg << source;
+    if (e.source().begin.line > 0)
+      msg << ":" << e.source().begin.line << ":" << e.source().begin.column;
+    msg << ": not a valid TOML scene: " << e.description();
+    throw SceneError(msg.str());
+  }
+}
+
+// The whole file, read by hand rather than by toml::parse_file, so that a pipe (/dev/stdin) works,
+// a directory or a device that never ends (/dev/zero) is rejected, and an error says why.
+std::string read_scene_file(const std::string& path) {
+  const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) throw SceneError(path + ": cannot open the scene file: " + std::strerror(errno));
+  struct stat info;
+  if (fstat(fd, &info) == 0 && S_ISDIR(info.st_mode)) {
+    close(fd);
+    throw SceneError(path + ": is a directory, not a scene file");
+  }
+  std::string text;
+  char chunk[65536];
+  for (;;) {
+    const ssize_t n = read(fd, chunk, sizeof chunk);
+    if (n == 0) break;
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      const int err = errno;
+      close(fd);
+      throw SceneError(path + ": cannot read the scene file: " + std::strerror(err));
+    }
+    text.append(chunk, static_cast<std::size_t>(n));
+    if (text.size() > kMaxSceneBytes) {
+      close(fd);
+      throw SceneError(path + ": longer than " + std::to_string(kMaxSceneBytes) +
+                       " bytes: not a scene file");
+    }
+  }
+  close(fd);
+  return text;
 }
 
 Scene parse_with(toml::table root, const std::string& source,
@@ -254,29 +476,12 @@ std::string_view channel_name(Channel c) {
 }
 
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
-  toml::table root;
-  try {
-    root = toml::parse_file(path);
-  } catch (const toml::parse_error& e) {
-    std::ostringstream msg;
-    msg << path;
-    if (e.source().begin.line > 0)
-      msg << ":" << e.source().begin.line << ":" << e.source().begin.column;
-    msg << ": not a valid TOML scene: " << e.description();
-    throw SceneError(msg.str());
-  }
-  return parse_with(std::move(root), path, overrides);
+  return parse_with(parse_toml(read_scene_file(path), path), path, overrides);
 }
 
 Scene parse_scene(std::string_view text, const std::string& source,
                   const std::vector<std::string>& overrides) {
-  toml::table root;
-  try {
-    root = toml::parse(text, source);
-  } catch (const toml::parse_error& e) {
-    throw SceneError(source + ": not a valid TOML scene: " + std::string(e.description()));
-  }
-  return parse_with(std::move(root), source, overrides);
+  return parse_with(parse_toml(text, source), source, overrides);
 }
 
 const toml::node* MethodParams::find(std::string_view key) {
