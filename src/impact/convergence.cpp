@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <variant>
 
+#include "impact/gsl_errors.hpp"
 #include "impact/output.hpp"
 #include "impact/registry.hpp"
 #include "impact/scene.hpp"
@@ -61,7 +62,7 @@ class Quadrature {
     fn.function = [](double t, void* p) { return (*static_cast<F*>(p))(t); };
     fn.params = &integrand;
     double total = 0;
-    gsl_error_handler_t* previous = gsl_set_error_handler_off();
+    const GslErrorsAsStatus guard;
     for (std::size_t i = 0; i + 1 < points.size(); ++i) {
       if (!(points[i + 1] > points[i])) continue;
       double result = 0, abserr = 0;
@@ -70,13 +71,10 @@ class Quadrature {
                               GSL_INTEG_GAUSS21, workspace_, &result, &abserr);
       // GSL_EROUND: the integrand is at the round-off level of its magnitude (e.g. int u psi''
       // with u linear on the support, exactly 0), and the result is that level; accepted.
-      if (status != GSL_SUCCESS && status != GSL_EROUND) {
-        gsl_set_error_handler(previous);
+      if (status != GSL_SUCCESS && status != GSL_EROUND)
         throw std::runtime_error(std::string("GSL quadrature failed: ") + gsl_strerror(status));
-      }
       total += result;
     }
-    gsl_set_error_handler(previous);
     return total;
   }
 

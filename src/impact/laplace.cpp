@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "impact/gsl_errors.hpp"
 #include "impact/registry.hpp"
 #include "impact/run.hpp"
 #include "impact/scene.hpp"
@@ -28,19 +29,6 @@ constexpr double kNegligibleExponent = 60.0;
 // Impacts taken as breakpoints of the exact energy: a Zeno sequence with e <= 0.9 has lost all
 // but e^1000 < 1e-45 of its speed after 500 impacts.
 constexpr std::int64_t kMaxBreakpoints = 500;
-
-// Turns GSL's abort-on-error handler off while a transform runs and restores the previous one, so
-// that a failure becomes an exception and the process-wide setting is left as it was.
-class GslErrorsAsStatus {
- public:
-  GslErrorsAsStatus() : previous_(gsl_set_error_handler_off()) {}
-  GslErrorsAsStatus(const GslErrorsAsStatus&) = delete;
-  GslErrorsAsStatus& operator=(const GslErrorsAsStatus&) = delete;
-  ~GslErrorsAsStatus() { gsl_set_error_handler(previous_); }
-
- private:
-  gsl_error_handler_t* previous_;
-};
 
 // GSL_EROUND means that round-off stopped the refinement before kEpsRel was met: the result is then
 // as good as double precision allows and its error estimate is reported in abserr, so it is kept.

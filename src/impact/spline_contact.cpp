@@ -12,6 +12,8 @@
 #include <string>
 #include <utility>
 
+#include "impact/gsl_errors.hpp"
+
 namespace impact {
 
 namespace {
@@ -21,19 +23,6 @@ void check_order(int order, int max_order) {
     throw std::invalid_argument("derivative order " + std::to_string(order) + " outside 0.." +
                                 std::to_string(max_order));
 }
-
-// Turns GSL's abort-on-error handler off for one call and restores the previous one, so that the
-// library reports GSL failures as exceptions without changing the process-wide setting.
-class GslErrorsAsStatus {
- public:
-  GslErrorsAsStatus() : previous_(gsl_set_error_handler_off()) {}
-  GslErrorsAsStatus(const GslErrorsAsStatus&) = delete;
-  GslErrorsAsStatus& operator=(const GslErrorsAsStatus&) = delete;
-  ~GslErrorsAsStatus() { gsl_set_error_handler(previous_); }
-
- private:
-  gsl_error_handler_t* previous_;
-};
 
 void check_gsl(int status, const char* what) {
   if (status != GSL_SUCCESS)
