@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_support.hpp"
 #include "impact/model.hpp"
 #include "impact/registry.hpp"
 #include "impact/run.hpp"
@@ -24,81 +25,11 @@
 
 using Catch::Contains;
 
+using namespace impact::testing;
+
 namespace {
 
 const std::string kSource = IMPACT_SOURCE_DIR;
-
-std::string quote(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-struct Result {
-  int code = -1;  // the exit status, or -1 if the process did not exit normally
-  std::string out, err;
-};
-
-// A fresh directory under /tmp in which the command runs; removed with everything in it.
-class TempDir {
- public:
-  TempDir() {
-    char name[] = "/tmp/impact_cli_test_XXXXXX";
-    REQUIRE(mkdtemp(name) != nullptr);
-    path_ = name;
-    char cap[] = "/tmp/impact_cli_capture_XXXXXX";
-    REQUIRE(mkdtemp(cap) != nullptr);
-    capture_ = cap;
-  }
-  ~TempDir() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path_, ignored);
-    std::filesystem::remove_all(capture_, ignored);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-
-  const std::string& path() const { return path_; }
-  std::string operator/(const std::string& name) const { return path_ + "/" + name; }
-
-  std::string write(const std::string& name, const std::string& text) const {
-    std::ofstream(*this / name) << text;
-    return *this / name;
-  }
-
-  // Runs `impact <args>` with this directory as the working directory (standard output to
-  // `stdout_to` when given, else captured).
-  Result run(const std::string& args, const std::string& stdout_to = "") const {
-    const std::string out = capture_ + "/stdout", err = capture_ + "/stderr";
-    const std::string command = "cd " + quote(path_) + " && " + quote(IMPACT_CLI) + " " + args +
-                                " >" + quote(stdout_to.empty() ? out : stdout_to) + " 2>" +
-                                quote(err) + " </dev/null";
-    const int status = std::system(command.c_str());
-    Result r;
-    r.code = status != -1 && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = slurp(out);
-    r.err = slurp(err);
-    return r;
-  }
-
-  // The names in the directory (to check that nothing, not even a temporary, is left behind).
-  std::set<std::string> entries(const std::string& sub = "") const {
-    std::set<std::string> names;
-    for (const auto& e : std::filesystem::directory_iterator(sub.empty() ? path_ : *this / sub))
-      names.insert(e.path().filename().string());
-    return names;
-  }
-
- private:
-  std::string path_, capture_;
-};
 
 struct Csv {
   std::string header;

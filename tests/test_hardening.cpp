@@ -24,90 +24,17 @@
 #include <string>
 #include <vector>
 
+#include "cli_support.hpp"
 #include "impact/scene.hpp"
 
 using Catch::Contains;
+
+using namespace impact::testing;
 
 namespace {
 
 const std::string kSource = IMPACT_SOURCE_DIR;
 const std::string kFigure3 = kSource + "/experiments/figure3/no_cor.toml";
-
-std::string quote(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-struct Result {
-  int code = -1;  // the exit status, or -1 if the process did not exit normally
-  std::string out, err;
-};
-
-// A fresh directory under /tmp with everything in it removed at the end; commands run in it.
-class TempDir {
- public:
-  TempDir() {
-    char name[] = "/tmp/impact_hardening_XXXXXX";
-    REQUIRE(mkdtemp(name) != nullptr);
-    path_ = name;
-    char cap[] = "/tmp/impact_hardening_capture_XXXXXX";
-    REQUIRE(mkdtemp(cap) != nullptr);
-    capture_ = cap;
-  }
-  ~TempDir() {
-    std::error_code ignored;
-    std::filesystem::permissions(path_, std::filesystem::perms::owner_all,
-                                 std::filesystem::perm_options::add, ignored);
-    std::filesystem::remove_all(path_, ignored);
-    std::filesystem::remove_all(capture_, ignored);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-
-  std::string operator/(const std::string& name) const { return path_ + "/" + name; }
-
-  std::string write(const std::string& name, const std::string& text) const {
-    std::ofstream(*this / name, std::ios::binary) << text;
-    return *this / name;
-  }
-
-  // Runs `impact <args>` in this directory, after `prefix` (e.g. "ulimit -f 1;").
-  Result run(const std::string& args, const std::string& prefix = "") const {
-    return shell(prefix + " \"$IMPACT\" " + args);
-  }
-
-  // Runs a shell script in this directory, with $IMPACT the command; captures what the script
-  // writes to standard output and error.
-  Result shell(const std::string& script) const {
-    const std::string out = capture_ + "/stdout", err = capture_ + "/stderr";
-    const std::string command = "cd " + quote(path_) + " && IMPACT=" + quote(IMPACT_CLI) +
-                                " && { " + script + "\n} >" + quote(out) + " 2>" + quote(err);
-    const int status = std::system(command.c_str());
-    Result r;
-    r.code = status != -1 && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = slurp(out);
-    r.err = slurp(err);
-    return r;
-  }
-
-  std::set<std::string> entries(const std::string& sub = "") const {
-    std::set<std::string> names;
-    for (const auto& e : std::filesystem::directory_iterator(sub.empty() ? path_ : *this / sub))
-      names.insert(e.path().filename().string());
-    return names;
-  }
-
- private:
-  std::string path_, capture_;
-};
 
 // A short scene that reaches the floor (u0 = 0.05, v0 = -1: contact at t = 0.05).
 const std::string kShort =
@@ -151,7 +78,7 @@ TEST_CASE("hardening: a scene read from a pipe runs like the file", "[hardening]
   TempDir dir;
   dir.write("short.toml", kShort);
   const Result from_file = dir.run("run short.toml -q");
-  const Result from_pipe = dir.run("run /dev/stdin -q < short.toml");
+  const Result from_pipe = dir.shell("\"$IMPACT\" run /dev/stdin -q < short.toml");
   REQUIRE(from_file.code == 0);
   CHECK(from_pipe.code == 0);
   CHECK(from_pipe.out == from_file.out);
@@ -426,7 +353,7 @@ TEST_CASE("hardening: a file size limit stops the run with exit 1 and no partial
   dir.write("X.csv", "an earlier result\n");
   // ulimit -f 1: at most 1 block (1024 bytes in bash, 512 in POSIX sh); the 10001-row CSV of
   // figure 3 is 0.5 MB. Writes past the limit fail with EFBIG (SIGXFSZ is ignored by impact).
-  const Result r = dir.run("run " + quote(kFigure3) + " -o X.csv", "ulimit -f 1;");
+  const Result r = dir.shell("ulimit -f 1; \"$IMPACT\" run " + quote(kFigure3) + " -o X.csv");
   CHECK(r.code == 1);
   CHECK_THAT(r.err, Contains("X.csv: write failed: File too large"));
   CHECK(dir.entries() == std::set<std::string>{"s.toml", "X.csv"});

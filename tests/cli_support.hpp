@@ -1,0 +1,99 @@
+// Running the real `impact` binary from a test: a scratch directory, the command's exit status
+// and what it wrote. Shared by test_cli.cpp and test_hardening.cpp.
+#pragma once
+
+#include <sys/wait.h>
+
+#include <catch2/catch.hpp>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+
+namespace impact::testing {
+
+// s quoted for the shell.
+inline std::string quote(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+inline std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+struct Result {
+  int code = -1;  // the exit status, or -1 if the process did not exit normally
+  std::string out, err;
+};
+
+// A fresh directory under /tmp in which commands run; removed with everything in it (also after
+// a test took its permissions away).
+class TempDir {
+ public:
+  TempDir() {
+    char name[] = "/tmp/impact_test_XXXXXX";
+    REQUIRE(mkdtemp(name) != nullptr);
+    path_ = name;
+    char cap[] = "/tmp/impact_test_capture_XXXXXX";
+    REQUIRE(mkdtemp(cap) != nullptr);
+    capture_ = cap;
+  }
+  ~TempDir() {
+    std::error_code ignored;
+    std::filesystem::permissions(path_, std::filesystem::perms::owner_all,
+                                 std::filesystem::perm_options::add, ignored);
+    std::filesystem::remove_all(path_, ignored);
+    std::filesystem::remove_all(capture_, ignored);
+  }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+
+  const std::string& path() const { return path_; }
+  std::string operator/(const std::string& name) const { return path_ + "/" + name; }
+
+  std::string write(const std::string& name, const std::string& text) const {
+    std::ofstream(*this / name, std::ios::binary) << text;
+    return *this / name;
+  }
+
+  // Runs `impact <args>` in this directory (standard output to `stdout_to` when given, else
+  // captured).
+  Result run(const std::string& args, const std::string& stdout_to = "") const {
+    return shell("\"$IMPACT\" " + args + (stdout_to.empty() ? "" : " >" + quote(stdout_to)) +
+                 " </dev/null");
+  }
+
+  // Runs a shell script in this directory, with $IMPACT the command; captures what the script
+  // writes to standard output and error.
+  Result shell(const std::string& script) const {
+    const std::string out = capture_ + "/stdout", err = capture_ + "/stderr";
+    const std::string command = "cd " + quote(path_) + " && IMPACT=" + quote(IMPACT_CLI) +
+                                " && { " + script + "\n} >" + quote(out) + " 2>" + quote(err);
+    const int status = std::system(command.c_str());
+    Result r;
+    r.code = status != -1 && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = slurp(out);
+    r.err = slurp(err);
+    return r;
+  }
+
+  // The names in the directory (to check that nothing, not even a temporary, is left behind).
+  std::set<std::string> entries(const std::string& sub = "") const {
+    std::set<std::string> names;
+    for (const auto& e : std::filesystem::directory_iterator(sub.empty() ? path_ : *this / sub))
+      names.insert(e.path().filename().string());
+    return names;
+  }
+
+ private:
+  std::string path_, capture_;
+};
+
+}  // namespace impact::testing
