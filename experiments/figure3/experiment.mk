@@ -3,7 +3,7 @@
 EXPERIMENTS += figure3
 figure3_DRIVER := $(BUILD)/experiments/figure3/exp_figure3
 figure3_SCENES := experiments/figure3/no_cor.toml experiments/figure3/cor075.toml
-figure3_OUTPUTS := figures/figure3.png figures/figure3.svg figures/figure3_h_sweep.png \
+figure3_OUTPUTS := figures/figure3.png figures/figure3.pdf figures/figure3_h_sweep.png \
     figures/figure3_h_sweep.svg $(RESULTS)/figure3/summary.toml
 $(figure3_OUTPUTS) &: experiments/figure3/plot.gp $(figure3_SCENES) $(IMPACT) $(figure3_DRIVER)
 	@mkdir -p $(RESULTS)/figure3 figures

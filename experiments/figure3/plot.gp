@@ -14,13 +14,14 @@ csv(scene, method) = sprintf('%s/%s_%s.csv', results, scene, method)
 blue = "#0072B2"
 orange = "#E69F00"
 
-do for [format in "png svg"] {
+# The vector copy is a PDF: 10^4-point curves in 12 panels make an SVG of several MB.
+do for [format in "png pdf"] {
   if (format eq "png") {
     set terminal pngcairo size 1200,1300 font ",10"
     set output 'figures/figure3.png'
   } else {
-    set terminal svg size 1200,1300 font ",10" dynamic
-    set output 'figures/figure3.svg'
+    set terminal pdfcairo size 8in,8.7in font ",7"
+    set output 'figures/figure3.pdf'
   }
   set multiplot layout 4,2 columnsfirst title \
       "Figure 3: f = 0, u_0 = 5 m, v_0 = -1 m/s, h = 10^{-3} s; direct vs fb\\_newton vs exact"

@@ -3,7 +3,7 @@
 EXPERIMENTS += figure4
 figure4_DRIVER := $(BUILD)/experiments/figure4/exp_figure4
 figure4_SCENES := experiments/figure4/no_cor.toml experiments/figure4/cor075.toml
-figure4_OUTPUTS := figures/figure4.png figures/figure4.svg figures/figure4_h_sweep.png \
+figure4_OUTPUTS := figures/figure4.png figures/figure4.pdf figures/figure4_h_sweep.png \
     figures/figure4_h_sweep.svg $(RESULTS)/figure4/summary.toml
 $(figure4_OUTPUTS) &: experiments/figure4/plot.gp $(figure4_SCENES) $(IMPACT) $(figure4_DRIVER)
 	@mkdir -p $(RESULTS)/figure4 figures
