@@ -31,11 +31,6 @@ const double kRootEps = std::sqrt(kSmoothing);
 constexpr double kSmoothingTolerance = 1e-3;
 const std::string kDir = std::string(IMPACT_SOURCE_DIR) + "/experiments/figure3";
 
-std::string num(double x) {
-  char buf[32];
-  return std::string(buf, format_double(buf, buf + sizeof buf, x));
-}
-
 Scene scene(const std::string& name, const std::string& method,
             std::vector<std::string> overrides = {}) {
   overrides.push_back("method.name=" + method);
@@ -66,7 +61,8 @@ double ref(std::string_view table, std::string_view key) {
 // smoothing's 2 sqrt(eps) = 6.3e-8, is 60 times the tolerance).
 void regress(std::string_view table, std::string_view key, double measured) {
   const double expected = ref(table, key);
-  INFO(table << "." << key << ": measured " << num(measured) << ", reference " << num(expected));
+  INFO(table << "." << key << ": measured " << impact::round_trip(measured) << ", reference "
+             << impact::round_trip(expected));
   CHECK(std::fabs(measured - expected) <= 1e-9 * std::fmax(1.0, std::fabs(expected)));
 }
 
@@ -208,7 +204,7 @@ TEST_CASE("Figure 3: key numbers match reference.toml", "[figure3][regression]")
   regress("cor_effect", "max_diff_N_direct", cor_effect("direct", {}));
   regress("cor_effect", "max_diff_N_fb_newton", cor_effect("fb_newton", {}));
   regress("cor_effect", "max_diff_N_direct_u0_plus_ulp",
-          cor_effect("direct", {"initial.u0=" + num(std::nextafter(5.0, 6.0))}));
+          cor_effect("direct", {"initial.u0=" + impact::round_trip(std::nextafter(5.0, 6.0))}));
   regress("cor_effect", "max_diff_N_direct_theta_third", cor_effect("direct", {"time.h=6e-4"}));
   regress("cor_effect", "max_diff_N_direct_theta_two_thirds",
           cor_effect("direct", {"time.h=3e-4"}));

@@ -27,11 +27,6 @@ constexpr double kG = 9.80665;  // |f|
 constexpr double kH = 1e-3;     // the paper's step
 constexpr int kEnsembleUlps = 200;
 
-std::string num(double x) {
-  char buf[32];
-  return std::string(buf, format_double(buf, buf + sizeof buf, x));
-}
-
 Scene scene(const std::string& name, const std::string& method,
             std::vector<std::string> overrides = {}) {
   overrides.push_back("method.name=" + method);
@@ -81,7 +76,8 @@ double ref_at(std::string_view table, std::string_view key, std::size_t i) {
 // rest time by seconds), so a change of rounding anywhere in a solver changes them; if only those
 // fail after such a change, regenerate reference.toml (make figure4) and say so.
 void regress(double measured, double expected, std::string_view what) {
-  INFO(what << ": measured " << num(measured) << ", reference " << num(expected));
+  INFO(what << ": measured " << impact::round_trip(measured) << ", reference "
+            << impact::round_trip(expected));
   if (std::isnan(expected)) {
     CHECK(std::isnan(measured));
   } else if (std::isinf(expected)) {
@@ -92,7 +88,8 @@ void regress(double measured, double expected, std::string_view what) {
 }
 
 void regress_time(double measured, double expected, double h, std::string_view what) {
-  INFO(what << ": measured " << num(measured) << ", reference " << num(expected));
+  INFO(what << ": measured " << impact::round_trip(measured) << ", reference "
+            << impact::round_trip(expected));
   if (std::isnan(expected) || std::isinf(expected))
     CHECK(measured == expected);
   else
@@ -119,8 +116,9 @@ std::vector<double> sweep_steps() {
 std::vector<double> ensemble(const std::string& name, const std::string& method) {
   std::vector<double> times;
   for (int k = -kEnsembleUlps; k <= kEnsembleUlps; ++k)
-    times.push_back(rest(name, method, {"initial.u0=" + num(5.0 + k * std::ldexp(1.0, -50))})
-                        .rest_time.value_or(INFINITY));
+    times.push_back(
+        rest(name, method, {"initial.u0=" + impact::round_trip(5.0 + k * std::ldexp(1.0, -50))})
+            .rest_time.value_or(INFINITY));
   std::sort(times.begin(), times.end());
   return times;
 }
@@ -177,7 +175,7 @@ TEST_CASE(
   const double lift = kG * std::sqrt(1e-15 / 2);
   for (const double h : sweep_steps())
     for (const char* method : {"direct", "fb_newton"}) {
-      const RestAnalysis a = rest("no_cor", method, {"time.h=" + num(h)});
+      const RestAnalysis a = rest("no_cor", method, {"time.h=" + impact::round_trip(h)});
       INFO(method << ", h = " << h);
       CHECK(a.rest_time.has_value());
       CHECK(a.energy_final <= (h * kG) * (h * kG) / 8 + lift);
@@ -193,7 +191,7 @@ TEST_CASE(
   // nothing. theta is the fractional part of a flight time over h, erratic in h.
   std::vector<double> losses;
   for (const double h : sweep_steps()) {
-    const RestAnalysis a = rest("no_cor", "direct", {"time.h=" + num(h)});
+    const RestAnalysis a = rest("no_cor", "direct", {"time.h=" + impact::round_trip(h)});
     const ContactEpisode& e = a.episodes.front();
     const double V = e.speed_before;
     INFO("h = " << h);
@@ -230,7 +228,7 @@ TEST_CASE(
   std::vector<double> log_h, log_error;
   for (const double h : sweep_steps())
     for (const char* method : {"direct", "fb_newton"}) {
-      const RestAnalysis a = rest("cor075", method, {"time.h=" + num(h)});
+      const RestAnalysis a = rest("cor075", method, {"time.h=" + impact::round_trip(h)});
       INFO(method << ", h = " << h);
       REQUIRE(a.rest_time);
       const double error = *a.rest_time - zeno;
@@ -299,7 +297,7 @@ TEST_CASE("Figure 4: key numbers match reference.toml", "[figure4][regression]")
     regress(h, ref_at("h_sweep", "h", i), "h");
     for (const char* name : {"no_cor", "cor075"})
       for (const char* method : {"direct", "fb_newton"}) {
-        const RestAnalysis a = rest(name, method, {"time.h=" + num(h)});
+        const RestAnalysis a = rest(name, method, {"time.h=" + impact::round_trip(h)});
         const std::string key = std::string(name) + "_" + method;
         INFO(key << ", h = " << h);
         regress_time(a.rest_time.value_or(NAN), ref_at("h_sweep", key + "_rest_time", i), h,

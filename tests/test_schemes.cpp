@@ -1,7 +1,6 @@
 // The time-steppers against the exact solution where they must agree, against each other, and the
 // discrete invariants of Section 4 on seeded random scenes.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <limits>
 #include <random>
@@ -28,20 +27,15 @@ template <class Stepper>
 std::vector<Row> trajectory(Stepper&& stepper, const State& initial, const Grid& grid) {
   std::vector<Row> rows;
   rows.reserve(static_cast<std::size_t>(grid.steps) + 1);
-  simulate(stepper, initial, grid,
-           [&](std::int64_t, const State& s, const StepInfo& info) { rows.push_back({s, info}); });
+  simulate(stepper, initial, grid, [&](std::int64_t, const State& s, const StepInfo& info) {
+    rows.push_back({s, info});
+  });
   return rows;
 }
 
 std::vector<Row> trajectory(const Scene& scene) {
   AnyStepper stepper = make_stepper(scene);
   return trajectory(stepper, scene.initial, scene.grid);
-}
-
-// x in round-trip precision, so that a scene written as text holds exactly these doubles.
-std::string num(double x) {
-  char buf[32];
-  return std::string(buf, format_double(buf, buf + sizeof buf, x));
 }
 
 Scene paper_scene(const std::string& file, const std::string& method) {
@@ -127,9 +121,10 @@ Difference max_difference(const std::vector<Row>& a, const std::vector<Row>& b, 
   return d;
 }
 
-TEST_CASE("direct and fb_newton agree step by step on the paper's scenes, except where the "
-          "scheme without COR amplifies the smoothing by 2/h at each impact",
-          "[direct][fb_newton][claim]") {
+TEST_CASE(
+    "direct and fb_newton agree step by step on the paper's scenes, except where the "
+    "scheme without COR amplifies the smoothing by 2/h at each impact",
+    "[direct][fb_newton][claim]") {
   const double sqrt_eps = std::sqrt(1e-15);  // the paper's smoothing, the fb_newton default
   SECTION("Figure 3: the grid-aligned impact meets the kink of F_eps") {
     for (std::string file : {"figure3/no_cor.toml", "figure3/cor075.toml"}) {
@@ -183,10 +178,11 @@ TEST_CASE("discrete invariants of Section 4 hold on seeded random scenes",
     const double h = std::pow(10.0, -4 + 3 * unit(rng));
     const double T = 1 + 4 * unit(rng);
     for (std::string method : {"direct", "fb_newton"}) {
-      std::string text = "[initial]\nu0 = " + num(u0) + "\nv0 = " + num(v0) +
-                         "\n[floor]\nphi = " + num(phi) + "\n[force]\nf = " +
-                         num(f) + "\n[time]\nT = " + num(T) +
-                         "\nh = " + num(h) + "\n[method]\nname = \"" + method + "\"\n";
+      std::string text =
+          "[initial]\nu0 = " + impact::round_trip(u0) + "\nv0 = " + impact::round_trip(v0) +
+          "\n[floor]\nphi = " + impact::round_trip(phi) +
+          "\n[force]\nf = " + impact::round_trip(f) + "\n[time]\nT = " + impact::round_trip(T) +
+          "\nh = " + impact::round_trip(h) + "\n[method]\nname = \"" + method + "\"\n";
       Scene scene = parse_scene(text, "random-" + std::to_string(trial));
       auto rows = trajectory(scene);
       INFO(method << " " << text);
@@ -211,9 +207,10 @@ TEST_CASE("discrete invariants of Section 4 hold on seeded random scenes",
         // (4-3): direct sets the gap to exactly 0 in contact; the smoothed pair of fb_newton
         // gives a N = eps / 2 (eps = 1e-15) instead of 0, with the gap resolved only to one ulp
         // of the floor position.
-        const double resolution = 1e-15 + 2 * std::nextafter(std::fabs(phi), 1e300) - 2 * std::fabs(phi);
-        complementary =
-            complementary && std::fabs(N * gap) <= (method == "direct" ? 0.0 : resolution * (1 + N));
+        const double resolution =
+            1e-15 + 2 * std::nextafter(std::fabs(phi), 1e300) - 2 * std::fabs(phi);
+        complementary = complementary &&
+                        std::fabs(N * gap) <= (method == "direct" ? 0.0 : resolution * (1 + N));
         // E^{l+1} <= E^l (proof of Lemma 3), up to round-off: that of evaluating E, and on a
         // contact step that of the rebound velocity 2 (phi - u^l)/h - v^l, which carries the
         // rounding of u (one ulp) multiplied by 2/h.
@@ -238,9 +235,10 @@ TEST_CASE("discrete invariants of Section 4 hold on seeded random scenes",
   }
 }
 
-TEST_CASE("reading of (5-3): eps belongs inside the square root, so a contact step of fb_newton "
-          "satisfies (u - phi) N = eps/2",
-          "[fb_newton][claim]") {
+TEST_CASE(
+    "reading of (5-3): eps belongs inside the square root, so a contact step of fb_newton "
+    "satisfies (u - phi) N = eps/2",
+    "[fb_newton][claim]") {
   // F_eps(a, b) = a + b - sqrt(a^2 + b^2 + eps) = 0 iff a + b > 0 and a b = eps/2. With eps
   // outside the root, a + b - sqrt(a^2 + b^2) = eps, the pair would need a b = eps (a + b) +
   // eps^2/2 instead. A larger eps makes the product measurable above round-off.

@@ -31,11 +31,6 @@ namespace {
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 constexpr double kGravity = -9.80665;
 
-std::string num(double x) {
-  char buf[32];
-  return std::string(buf, format_double(buf, buf + sizeof buf, x));
-}
-
 // ---- Random scenes over the extreme ranges ----
 
 struct RandomScene {
@@ -47,14 +42,16 @@ struct RandomScene {
   double stiffness = 1e6;  // penalty
 
   std::string text(const std::string& method) const {
-    std::string t =
-        "[initial]\nu0 = " + num(u0) + "\nv0 = " + num(v0) + "\n[floor]\nphi = " + num(phi) + "\n";
-    if (cor) t += "cor = " + num(*cor) + "\n";
+    std::string t = "[initial]\nu0 = " + impact::round_trip(u0) +
+                    "\nv0 = " + impact::round_trip(v0) +
+                    "\n[floor]\nphi = " + impact::round_trip(phi) + "\n";
+    if (cor) t += "cor = " + impact::round_trip(*cor) + "\n";
     // T = steps h, and exactly `steps` steps (T/h rounds back to steps within 1e-9).
-    t += "[force]\nf = " + num(f) + "\n[time]\nT = " + num(static_cast<double>(steps) * h) +
-         "\nh = " + num(h) + "\n[method]\nname = \"" + method + "\"\n";
-    if (method == "fb_newton") t += "epsilon = " + num(epsilon) + "\n";
-    if (method == "penalty") t += "stiffness = " + num(stiffness) + "\n";
+    t += "[force]\nf = " + impact::round_trip(f) +
+         "\n[time]\nT = " + impact::round_trip(static_cast<double>(steps) * h) +
+         "\nh = " + impact::round_trip(h) + "\n[method]\nname = \"" + method + "\"\n";
+    if (method == "fb_newton") t += "epsilon = " + impact::round_trip(epsilon) + "\n";
+    if (method == "penalty") t += "stiffness = " + impact::round_trip(stiffness) + "\n";
     return t;
   }
 };
@@ -474,9 +471,10 @@ TEST_CASE(
     const double depth = -g_eq + std::sqrt(g_eq * g_eq + V * V / c_N);
     const double h = duration / 200;
     const Scene scene = parse_scene(
-        "[initial]\nu0 = 0\nv0 = " + num(-V) +
-            "\n[force]\nf = -9.80665\n[time]\nT = " + num(1.5 * duration) + "\nh = " + num(h) +
-            "\n[method]\nname = \"penalty\"\n" + "stiffness = " + num(c_N) + "\n",
+        "[initial]\nu0 = 0\nv0 = " + impact::round_trip(-V) +
+            "\n[force]\nf = -9.80665\n[time]\nT = " + impact::round_trip(1.5 * duration) +
+            "\nh = " + impact::round_trip(h) + "\n[method]\nname = \"penalty\"\n" +
+            "stiffness = " + impact::round_trip(c_N) + "\n",
         "contact");
     AnyStepper stepper = make_stepper(scene);
     double min_u = 0, impulse = 0, exit = NAN;

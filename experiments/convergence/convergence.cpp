@@ -99,31 +99,6 @@ const std::vector<Subsequence> kSubsequences = {
 const std::vector<std::int64_t> kSubsequenceM = {250,   500,   1000,   2500,   5000,    10000,
                                                  25000, 50000, 100000, 250000, 1000000, 5000000};
 
-std::string num(double x) {
-  char buf[32];
-  return std::string(buf, impact::format_double(buf, buf + sizeof buf, x));
-}
-
-void write_text(const std::string& path, const std::string& text) {
-  impact::AtomicFile file(path);
-  std::fputs(text.c_str(), file.stream());
-  file.commit();
-}
-
-toml::array array_of(const std::vector<double>& values) {
-  toml::array a;
-  for (double v : values) a.push_back(v);
-  return a;
-}
-
-toml::table fit_table(const impact::OrderFit& fit) {
-  return toml::table{{"order", fit.order},
-                     {"h_min", fit.h_min},
-                     {"h_max", fit.h_max},
-                     {"points", static_cast<std::int64_t>(fit.points)},
-                     {"max_log_deviation", fit.max_log_deviation}};
-}
-
 double first_theta(const ConvergencePoint& p) {
   return p.tallies.episodes.empty() ? std::nan("") : p.tallies.episodes.front().theta;
 }
@@ -147,12 +122,13 @@ toml::table run_series(const Series& s, const std::string& dir) {
     compl410.push_back(p.tallies.complementarity);
     drop.push_back(p.tallies.energy_drop);
     loss.push_back(p.energy_loss(s.model));
-    csv << num(p.h) << ',' << num(theta.back()) << ',' << num(sup.back()) << ',' << num(cor.back())
-        << ',' << num(p.tallies.impulse) << ',' << num(printed.back()) << ','
-        << num(corrected.back()) << ',' << num(compl410.back()) << ',' << num(drop.back()) << ','
-        << num(loss.back()) << '\n';
+    csv << impact::round_trip(p.h) << ',' << impact::round_trip(theta.back()) << ','
+        << impact::round_trip(sup.back()) << ',' << impact::round_trip(cor.back()) << ','
+        << impact::round_trip(p.tallies.impulse) << ',' << impact::round_trip(printed.back()) << ','
+        << impact::round_trip(corrected.back()) << ',' << impact::round_trip(compl410.back()) << ','
+        << impact::round_trip(drop.back()) << ',' << impact::round_trip(loss.back()) << '\n';
   }
-  write_text(dir + "/series_" + s.name + ".csv", csv.str());
+  impact::write_text_file(dir + "/series_" + s.name + ".csv", csv.str());
   const auto abs_max = [](const std::vector<double>& v) {
     double m = 0;
     for (double x : v) m = std::fmax(m, std::fabs(x));
@@ -173,11 +149,11 @@ toml::table run_series(const Series& s, const std::string& dir) {
   }
   const impact::OrderFit fit = impact::fit_order(fit_h, fit_sup);
   toml::table t{{"label", s.label},
-                {"h", array_of(hs)},
-                {"sup_u", array_of(sup)},
-                {"theta", array_of(theta)},
-                {"effective_cor", array_of(cor)},
-                {"fit", fit_table(fit)},
+                {"h", impact::toml_array(hs)},
+                {"sup_u", impact::toml_array(sup)},
+                {"theta", impact::toml_array(theta)},
+                {"effective_cor", impact::toml_array(cor)},
+                {"fit", impact::order_fit_table(fit)},
                 {"on_grid_points_left_out", static_cast<std::int64_t>(hs.size() - fit_h.size())},
                 {"sup_min", *std::min_element(sup.begin(), sup.end())},
                 {"sup_max", *std::max_element(sup.begin(), sup.end())},
@@ -220,10 +196,10 @@ toml::table run_subsequence(const Subsequence& sub, const std::string& dir) {
     hs.push_back(p.h);
     sup.push_back(p.errors.sup_u);
     cor.push_back(first_cor(p));
-    csv << m << ',' << num(p.h) << ',' << num(first_theta(p)) << ',' << num(cor.back()) << ','
-        << num(sup.back()) << '\n';
+    csv << m << ',' << impact::round_trip(p.h) << ',' << impact::round_trip(first_theta(p)) << ','
+        << impact::round_trip(cor.back()) << ',' << impact::round_trip(sup.back()) << '\n';
   }
-  write_text(dir + "/subsequence_" + sub.name + ".csv", csv.str());
+  impact::write_text_file(dir + "/subsequence_" + sub.name + ".csv", csv.str());
   const ExactSolution limit_solution(limit, initial), elastic(model_of(0, 1.0), initial);
   double bound = 0;
   for (std::size_t i = 0; i < hs.size(); ++i) bound = std::fmax(bound, sup[i] / hs[i]);
@@ -234,10 +210,10 @@ toml::table run_subsequence(const Subsequence& sub, const std::string& dir) {
   return toml::table{
       {"theta", sub.theta},
       {"limit_cor", e},
-      {"h", array_of(hs)},
-      {"sup_u", array_of(sup)},
-      {"effective_cor", array_of(cor)},
-      {"fit", fit_table(impact::fit_order(hs, sup))},
+      {"h", impact::toml_array(hs)},
+      {"sup_u", impact::toml_array(sup)},
+      {"effective_cor", impact::toml_array(cor)},
+      {"fit", impact::order_fit_table(impact::fit_order(hs, sup))},
       {"sup_max", *std::max_element(sup.begin(), sup.end())},
       {"sup_over_h_max", bound},
       {"limit_distance_to_elastic", impact::sup_distance(limit_solution, elastic, kT)}};
@@ -259,9 +235,10 @@ void write_paths(const std::string& dir) {
     std::ostringstream csv;
     csv << "t,u_h,u_exact\n";
     impact::simulate(direct, initial, grid, [&](std::int64_t l, const State& s, const auto&) {
-      csv << num(grid.t(l)) << ',' << num(s.u) << ',' << num(limit.at(grid.t(l)).u) << '\n';
+      csv << impact::round_trip(grid.t(l)) << ',' << impact::round_trip(s.u) << ','
+          << impact::round_trip(limit.at(grid.t(l)).u) << '\n';
     });
-    write_text(dir + "/path_theta_" + std::to_string(k) + ".csv", csv.str());
+    impact::write_text_file(dir + "/path_theta_" + std::to_string(k) + ".csv", csv.str());
   }
 }
 
@@ -286,7 +263,7 @@ int main(int argc, char** argv) {
     std::ostringstream out;
     out << "# Written by exp_convergence; the keys of experiments/convergence/reference.toml.\n"
         << summary << '\n';
-    write_text(dir + "/summary.toml", out.str());
+    impact::write_text_file(dir + "/summary.toml", out.str());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "exp_convergence: %s\n", e.what());
     return 1;

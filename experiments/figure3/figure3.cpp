@@ -21,11 +21,6 @@ namespace {
 
 using namespace impact;
 
-std::string num(double x) {
-  char buf[32];
-  return std::string(buf, format_double(buf, buf + sizeof buf, x));
-}
-
 void write_file(const std::string& path, const std::string& text) {
   AtomicFile file(path);
   std::fputs(text.c_str(), file.stream());
@@ -87,15 +82,16 @@ std::string energy_sweep(const std::string& scene_path, toml::table& summary) {
   double worst_ratio = 1.0, worst_h = 0.0;
   for (int i = 0; i <= kSteps; ++i) {
     const double h = std::pow(10.0, -4.0 + 2.0 * i / kSteps);
-    const std::string step = "time.h=" + num(h);
+    const std::string step = "time.h=" + impact::round_trip(h);
     const RestAnalysis direct = analyse_rest(load_scene(scene_path, {step, "method.name=direct"}));
     const RestAnalysis fb_newton =
         analyse_rest(load_scene(scene_path, {step, "method.name=fb_newton"}));
     const double theta = direct.episodes.front().theta;
     const double ratio = direct.energy_final / direct.energy_initial;
-    csv << num(h) << ',' << num(theta) << ',' << num(ratio) << ','
-        << num(fb_newton.energy_final / fb_newton.energy_initial) << ','
-        << num((1 - 2 * theta) * (1 - 2 * theta)) << '\n';
+    csv << impact::round_trip(h) << ',' << impact::round_trip(theta) << ','
+        << impact::round_trip(ratio) << ','
+        << impact::round_trip(fb_newton.energy_final / fb_newton.energy_initial) << ','
+        << impact::round_trip((1 - 2 * theta) * (1 - 2 * theta)) << '\n';
     if (ratio < worst_ratio) {
       worst_ratio = ratio;
       worst_h = h;
@@ -123,7 +119,7 @@ int main(int argc, char** argv) {
     summary.insert("cor075", column(dir + "/cor075.toml"));
     // At the paper's h the impact t* = 5 is on the grid (theta = 0); u0 one ulp above 5 moves it
     // just after the grid point; h = 6e-4 and 3e-4 put it at theta = 1/3 and 2/3 of a step.
-    const std::string u0_up = "initial.u0=" + num(std::nextafter(5.0, 6.0));
+    const std::string u0_up = "initial.u0=" + impact::round_trip(std::nextafter(5.0, 6.0));
     summary.insert(
         "cor_effect",
         toml::table{
@@ -159,7 +155,9 @@ int main(int argc, char** argv) {
     for (const char* scene : {"no_cor", "cor075"})
       for (const char* channel : {"u", "v", "N", "E"})
         labels << "diff_" << scene << "_" << channel << " = "
-               << num(*summary[scene][std::string("max_diff_") + channel].value<double>()) << '\n';
+               << impact::round_trip(
+                      *summary[scene][std::string("max_diff_") + channel].value<double>())
+               << '\n';
     write_file(out + "/labels.gp", labels.str());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "exp_figure3: %s\n", e.what());

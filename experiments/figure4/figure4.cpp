@@ -37,11 +37,6 @@ constexpr int kSweepPerDecade = 40, kSweepPoints = 3 * kSweepPerDecade + 1, kKee
 // The ensemble: u0 moved by k ulps, |k| <= kEnsembleUlps, at the paper's h.
 constexpr int kEnsembleUlps = 200;
 
-std::string num(double x) {
-  char buf[32];
-  return std::string(buf, format_double(buf, buf + sizeof buf, x));
-}
-
 void write_file(const std::string& path, const std::string& text) {
   AtomicFile file(path);
   std::fputs(text.c_str(), file.stream());
@@ -111,8 +106,8 @@ std::vector<SweepRow> sweep(const std::string& dir) {
     row.h = std::pow(10.0, -(2.0 + static_cast<double>(i) / kSweepPerDecade));
     for (int s = 0; s < 2; ++s)
       for (int m = 0; m < 2; ++m)
-        row.run[s][m] =
-            analyse_rest(scene_for(dir, kScenes[s], kMethods[m], {"time.h=" + num(row.h)}));
+        row.run[s][m] = analyse_rest(
+            scene_for(dir, kScenes[s], kMethods[m], {"time.h=" + impact::round_trip(row.h)}));
     rows.push_back(row);
   }
   return rows;
@@ -142,12 +137,12 @@ std::string sweep_csv(const std::vector<SweepRow>& rows) {
         csv << ',' << s << '_' << m << '_' << q;
   csv << '\n';
   for (const SweepRow& r : rows) {
-    csv << num(r.h);
+    csv << impact::round_trip(r.h);
     for (const auto& scene : r.run)
       for (const RestAnalysis& a : scene)
-        csv << ',' << (a.rest_time ? num(*a.rest_time) : "nan") << ',' << a.impacts << ','
-            << num(a.energy_loss()) << ',' << num(first_impact_loss(a)) << ','
-            << num(a.energy_mean);
+        csv << ',' << (a.rest_time ? impact::round_trip(*a.rest_time) : "nan") << ',' << a.impacts
+            << ',' << impact::round_trip(a.energy_loss()) << ','
+            << impact::round_trip(first_impact_loss(a)) << ',' << impact::round_trip(a.energy_mean);
     csv << '\n';
   }
   return csv.str();
@@ -203,13 +198,13 @@ toml::table ensemble(const std::string& dir, std::string& csv_out) {
   csv << "k,u0,no_cor_direct,no_cor_fb_newton,cor075_direct,cor075_fb_newton\n";
   for (int k = -kEnsembleUlps; k <= kEnsembleUlps; ++k) {
     const double u0 = 5.0 + k * std::ldexp(1.0, -50);  // ulp(5) = 2^-50
-    csv << k << ',' << num(u0);
+    csv << k << ',' << impact::round_trip(u0);
     for (int s = 0; s < 2; ++s)
       for (int m = 0; m < 2; ++m) {
-        const auto t =
-            analyse_rest(scene_for(dir, kScenes[s], kMethods[m], {"initial.u0=" + num(u0)}))
-                .rest_time;
-        csv << ',' << (t ? num(*t) : "nan");
+        const auto t = analyse_rest(scene_for(dir, kScenes[s], kMethods[m],
+                                              {"initial.u0=" + impact::round_trip(u0)}))
+                           .rest_time;
+        csv << ',' << (t ? impact::round_trip(*t) : "nan");
         rest[s][m].push_back(t.value_or(INFINITY));
       }
     csv << '\n';
@@ -260,18 +255,24 @@ int main(int argc, char** argv) {
     for (const char* scene : kScenes) {
       for (const char* channel : {"u", "v", "N", "E"})
         labels << "diff_" << scene << "_" << channel << " = "
-               << num(*summary[scene][std::string("max_diff_") + channel].value<double>()) << '\n';
+               << impact::round_trip(
+                      *summary[scene][std::string("max_diff_") + channel].value<double>())
+               << '\n';
       for (const char* method : kMethods)
         labels << "rest_" << scene << "_" << method << " = "
-               << num(*summary[scene][std::string("rest_time_") + method].value<double>()) << '\n';
+               << impact::round_trip(
+                      *summary[scene][std::string("rest_time_") + method].value<double>())
+               << '\n';
     }
-    labels << "zeno = " << num(zeno) << '\n';
+    labels << "zeno = " << impact::round_trip(zeno) << '\n';
     labels << "energy0 = "
-           << num(energy(load_scene(dir + "/no_cor.toml").model,
-                         load_scene(dir + "/no_cor.toml").initial))
+           << impact::round_trip(energy(load_scene(dir + "/no_cor.toml").model,
+                                        load_scene(dir + "/no_cor.toml").initial))
            << '\n';
     labels << "order_direct = "
-           << num(*summary["h_sweep"]["cor075_direct_rest_time_order"].value<double>()) << '\n';
+           << impact::round_trip(
+                  *summary["h_sweep"]["cor075_direct_rest_time_order"].value<double>())
+           << '\n';
     write_file(out + "/labels.gp", labels.str());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "exp_figure4: %s\n", e.what());

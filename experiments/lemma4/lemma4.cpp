@@ -55,31 +55,6 @@ Model model_of(double f, std::optional<double> cor) {
   return m;
 }
 
-std::string num(double x) {
-  char buf[32];
-  return std::string(buf, impact::format_double(buf, buf + sizeof buf, x));
-}
-
-void write_text(const std::string& path, const std::string& text) {
-  impact::AtomicFile file(path);
-  std::fputs(text.c_str(), file.stream());
-  file.commit();
-}
-
-toml::array array_of(const std::vector<double>& values) {
-  toml::array a;
-  for (double v : values) a.push_back(v);
-  return a;
-}
-
-toml::table fit_table(const impact::OrderFit& fit) {
-  return toml::table{{"order", fit.order},
-                     {"h_min", fit.h_min},
-                     {"h_max", fit.h_max},
-                     {"points", static_cast<std::int64_t>(fit.points)},
-                     {"max_log_deviation", fit.max_log_deviation}};
-}
-
 // Part 1: the three distances on the grid for each h.
 toml::table paths(const std::string& name, const Model& model, const State& initial,
                   const std::vector<double>& hs, const std::string& dir) {
@@ -90,14 +65,14 @@ toml::table paths(const std::string& name, const Model& model, const State& init
     dm.push_back(impact::sup_distance("direct", "moreau_jean", model, initial, kT, h));
     de.push_back(impact::sup_distance("direct", "exact", model, initial, kT, h));
     me.push_back(impact::sup_distance("moreau_jean", "exact", model, initial, kT, h));
-    csv << num(h) << ',' << num(dm.back()) << ',' << num(de.back()) << ',' << num(me.back())
-        << '\n';
+    csv << impact::round_trip(h) << ',' << impact::round_trip(dm.back()) << ','
+        << impact::round_trip(de.back()) << ',' << impact::round_trip(me.back()) << '\n';
   }
-  write_text(dir + "/paths_" + name + ".csv", csv.str());
-  toml::table out{{"h", array_of(hs)},
-                  {"direct_mj", array_of(dm)},
-                  {"direct_exact", array_of(de)},
-                  {"mj_exact", array_of(me)}};
+  impact::write_text_file(dir + "/paths_" + name + ".csv", csv.str());
+  toml::table out{{"h", impact::toml_array(hs)},
+                  {"direct_mj", impact::toml_array(dm)},
+                  {"direct_exact", impact::toml_array(de)},
+                  {"mj_exact", impact::toml_array(me)}};
   for (const auto& [key, d] :
        {std::pair{"direct_mj", &dm}, std::pair{"direct_exact", &de}, std::pair{"mj_exact", &me}}) {
     // Distances below kCoincident are two paths that coincide up to rounding (direct and
@@ -116,7 +91,7 @@ toml::table paths(const std::string& name, const Model& model, const State& init
     const impact::OrderFit fit = impact::fit_order(fit_h, fit_d);
     std::printf("paths %-8s %-12s order %6.3f over %zu points, max %.3e, max / h %.3g\n",
                 name.c_str(), key, fit.order, fit.points, largest, bound);
-    out.insert(std::string(key) + "_fit", fit_table(fit));
+    out.insert(std::string(key) + "_fit", impact::order_fit_table(fit));
     out.insert(std::string(key) + "_coincident",
                static_cast<std::int64_t>(hs.size() - fit_h.size()));
     out.insert(std::string(key) + "_max", largest);
@@ -136,27 +111,29 @@ toml::table perturbation(const std::string& dir) {
   for (int k = 1; k <= 8; ++k) deltas.push_back(std::pow(10.0, -k));
   const Model models[] = {model_of(0, 1.0), model_of(-kGravity, 1.0)};
   for (double delta : deltas) {
-    csv << num(delta);
+    csv << impact::round_trip(delta);
     for (int m = 0; m < 2; ++m) {
       const ExactSolution reference(models[m], base);
       const ExactSolution moved_u(models[m], {base.u + delta, base.v});
       const ExactSolution moved_v(models[m], {base.u, base.v + delta});
       sups[2 * m].push_back(impact::sup_distance(reference, moved_u, kT));
       sups[2 * m + 1].push_back(impact::sup_distance(reference, moved_v, kT));
-      csv << ',' << num(sups[2 * m].back()) << ',' << num(sups[2 * m + 1].back());
+      csv << ',' << impact::round_trip(sups[2 * m].back()) << ','
+          << impact::round_trip(sups[2 * m + 1].back());
     }
     csv << '\n';
   }
-  write_text(dir + "/perturbation.csv", csv.str());
+  impact::write_text_file(dir + "/perturbation.csv", csv.str());
   const char* names[] = {"f0_u0", "f0_v0", "g_u0", "g_v0"};
-  out.insert("delta", array_of(deltas));
+  out.insert("delta", impact::toml_array(deltas));
   for (int i = 0; i < 4; ++i) {
     double lipschitz = 0;
     for (std::size_t j = 0; j < deltas.size(); ++j)
       lipschitz = std::fmax(lipschitz, sups[i][j] / deltas[j]);
-    out.insert(names[i], toml::table{{"sup", array_of(sups[i])},
-                                     {"fit", fit_table(impact::fit_order(deltas, sups[i]))},
-                                     {"sup_over_delta_max", lipschitz}});
+    out.insert(names[i],
+               toml::table{{"sup", impact::toml_array(sups[i])},
+                           {"fit", impact::order_fit_table(impact::fit_order(deltas, sups[i]))},
+                           {"sup_over_delta_max", lipschitz}});
   }
   return out;
 }
@@ -194,12 +171,14 @@ toml::table pair(const std::string& name, const Model& model_u, const State& u0,
   const auto row = [&](double t) {
     const State a = u.at(t), b = w.at(t);
     const impact::EnergyIdentity412 r = impact::energy_identity_412(u, w, model_u, t);
-    csv << num(t) << ',' << num(a.u) << ',' << num(b.u) << ',' << num(a.v) << ',' << num(b.v) << ','
-        << num(r.lhs) << ',' << num(r.paper_rhs) << ',' << num(r.force_terms) << ','
-        << num(r.dropped_n1_u) << ',' << num(r.dropped_n2_w) << ',' << num(r.paper_413) << '\n';
+    csv << impact::round_trip(t) << ',' << impact::round_trip(a.u) << ',' << impact::round_trip(b.u)
+        << ',' << impact::round_trip(a.v) << ',' << impact::round_trip(b.v) << ','
+        << impact::round_trip(r.lhs) << ',' << impact::round_trip(r.paper_rhs) << ','
+        << impact::round_trip(r.force_terms) << ',' << impact::round_trip(r.dropped_n1_u) << ','
+        << impact::round_trip(r.dropped_n2_w) << ',' << impact::round_trip(r.paper_413) << '\n';
   };
   for (int i = 0; i <= kSamples; ++i) row(T * i / kSamples);
-  write_text(dir + "/pair_" + name + ".csv", csv.str());
+  impact::write_text_file(dir + "/pair_" + name + ".csv", csv.str());
 
   toml::table out{{"sup_distance", impact::sup_distance(u, w, T)}};
   toml::array times, lhs, rhs, force, n1, n2, p413, ut, wt, uu, ww;
@@ -292,7 +271,7 @@ int main(int argc, char** argv) {
     std::ostringstream out;
     out << "# Written by exp_lemma4; the keys of experiments/lemma4/reference.toml.\n"
         << summary << '\n';
-    write_text(dir + "/summary.toml", out.str());
+    impact::write_text_file(dir + "/summary.toml", out.str());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "exp_lemma4: %s\n", e.what());
     return 1;

@@ -45,12 +45,6 @@ using namespace impact;
 
 constexpr int kRepetitions = 5;
 
-// x as a TOML number that reads back as the same double.
-std::string num(double x) {
-  char buf[32];
-  return std::string(buf, format_double(buf, buf + sizeof buf, x));
-}
-
 std::string scene_path(const std::string& name) {
   return std::string(IMPACT_SOURCE_DIR) + "/experiments/" + name + ".toml";
 }
@@ -87,7 +81,7 @@ void add_statistics(benchmark::internal::Benchmark* b, bool process = false) {
 // One full run of the scene per iteration, output off (the observer does nothing).
 void register_stepper(const std::string& method, const std::string& scene, double h,
                       const std::vector<std::string>& extra = {}, const std::string& tag = "") {
-  std::vector<std::string> overrides{"method.name=" + method, "time.h=" + num(h)};
+  std::vector<std::string> overrides{"method.name=" + method, "time.h=" + impact::round_trip(h)};
   overrides.insert(overrides.end(), extra.begin(), extra.end());
   const Scene s = load_scene(scene_path(scene), overrides);
   const std::string name =
@@ -204,7 +198,7 @@ void register_cli(const std::string& cli, const std::string& out_dir, const std:
                                 "--set",
                                 "method.name=" + method,
                                 "--set",
-                                "time.h=" + num(T / static_cast<double>(steps)),
+                                "time.h=" + impact::round_trip(T / static_cast<double>(steps)),
                                 "--set",
                                 "output.every=" + std::to_string(every),
                                 "--quiet",
@@ -279,7 +273,8 @@ void write_results(const std::string& dir, const Collector& collector) {
     const bool rate = q.key == "particle_steps_per_s";
     const double best = rate ? value(r.max, q.key) : value(r.min, q.key);
     const double median = value(r.median, q.key);
-    csv << name << "," << q.key << "," << q.unit << "," << num(best) << "," << num(median) << "\n";
+    csv << name << "," << q.key << "," << q.unit << "," << impact::round_trip(best) << ","
+        << impact::round_trip(median) << "\n";
     char line[256];
     std::snprintf(line, sizeof line, "| `%s` | %s | %.4g | %.4g |\n", name.c_str(), q.unit.c_str(),
                   best, median);
@@ -309,18 +304,21 @@ void write_results(const std::string& dir, const Collector& collector) {
         std::tuple{"fb_newton", 60.0, "10000000"}})
     for (const auto& scene : kScenes)
       steps << method << " " << scene << ","
-            << num(best("stepper/" + std::string(method) + "/" + label(scene), 1e9)) << ","
-            << num(best("cli/" + std::string(method) + "/" + label(scene) + "/" + cli_steps, 1e9))
-            << "," << num(target) << "\n";
+            << impact::round_trip(best("stepper/" + std::string(method) + "/" + label(scene), 1e9))
+            << ","
+            << impact::round_trip(
+                   best("cli/" + std::string(method) + "/" + label(scene) + "/" + cli_steps, 1e9))
+            << "," << impact::round_trip(target) << "\n";
   std::ofstream ensemble(dir + "/plot_ensemble.csv");
   ensemble << "case,T = 10 s sweep,settled (subnormal v)\n";
   for (const auto& [name, r] : collector.results())
     if (name.rfind("ensemble/", 0) == 0) {
       const auto settled = collector.results().find("ensemble_settled/" + name.substr(9));
-      ensemble << name.substr(9) << "," << num(r.max.at("particle_steps_per_s")) << ","
-               << num(settled == collector.results().end()
-                          ? std::nan("")
-                          : settled->second.max.at("particle_steps_per_s"))
+      ensemble << name.substr(9) << "," << impact::round_trip(r.max.at("particle_steps_per_s"))
+               << ","
+               << impact::round_trip(settled == collector.results().end()
+                                         ? std::nan("")
+                                         : settled->second.max.at("particle_steps_per_s"))
                << "\n";
     }
 }

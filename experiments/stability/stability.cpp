@@ -40,11 +40,6 @@ using namespace impact;
 
 constexpr double kGravity = -9.80665;
 
-std::string num(double x) {
-  char buf[32];
-  return std::string(buf, format_double(buf, buf + sizeof buf, x));
-}
-
 // 3 significant digits, for the table.
 std::string short_num(double x) {
   char buf[32];
@@ -119,11 +114,13 @@ std::string scene_text(double phi, double gap0, double v0, double f, std::option
                        double T, double h, const std::string& method,
                        const std::string& method_keys = "") {
   // u0 = phi + gap0 rounds to the floor's ulp; gap0 = 0 gives u0 = phi exactly.
-  std::string text = "[initial]\nu0 = " + num(phi + gap0) + "\nv0 = " + num(v0) +
-                     "\n[floor]\nphi = " + num(phi) + "\n";
-  if (cor) text += "cor = " + num(*cor) + "\n";
-  text += "[force]\nf = " + num(f) + "\n[time]\nT = " + num(T) + "\nh = " + num(h) +
-          "\n[method]\nname = \"" + method + "\"\n" + method_keys;
+  std::string text = "[initial]\nu0 = " + impact::round_trip(phi + gap0) +
+                     "\nv0 = " + impact::round_trip(v0) +
+                     "\n[floor]\nphi = " + impact::round_trip(phi) + "\n";
+  if (cor) text += "cor = " + impact::round_trip(*cor) + "\n";
+  text += "[force]\nf = " + impact::round_trip(f) + "\n[time]\nT = " + impact::round_trip(T) +
+          "\nh = " + impact::round_trip(h) + "\n[method]\nname = \"" + method + "\"\n" +
+          method_keys;
   return text;
 }
 
@@ -175,13 +172,14 @@ std::string csv_row(const std::string& prefix, const Cell& c) {
   std::string message = k.message;
   for (char& ch : message)
     if (ch == ',' || ch == '\n') ch = ';';
-  return prefix + "," + num(c.h) + "," + num(c.T) + "," + std::to_string(k.steps) + "," +
-         std::string(outcome_name(k.outcome)) + "," + std::to_string(static_cast<int>(k.outcome)) +
-         "," + num(k.min_gap) + "," + std::to_string(k.energy_rises) + "," +
-         num(k.max_energy_rise) + "," + std::to_string(k.max_iterations) + "," +
-         num(k.mean_iterations) + "," + std::to_string(k.work) + "," + num(k.error_u) + "," +
-         num(k.amplitude) + "," + num(k.error_energy) + "," + num(c.seconds) + ",\"" + message +
-         "\"\n";
+  return prefix + "," + impact::round_trip(c.h) + "," + impact::round_trip(c.T) + "," +
+         std::to_string(k.steps) + "," + std::string(outcome_name(k.outcome)) + "," +
+         std::to_string(static_cast<int>(k.outcome)) + "," + impact::round_trip(k.min_gap) + "," +
+         std::to_string(k.energy_rises) + "," + impact::round_trip(k.max_energy_rise) + "," +
+         std::to_string(k.max_iterations) + "," + impact::round_trip(k.mean_iterations) + "," +
+         std::to_string(k.work) + "," + impact::round_trip(k.error_u) + "," +
+         impact::round_trip(k.amplitude) + "," + impact::round_trip(k.error_energy) + "," +
+         impact::round_trip(c.seconds) + ",\"" + message + "\"\n";
 }
 
 constexpr const char* kCellHeader =
@@ -252,17 +250,18 @@ EpsResults run_eps(const std::string& dir) {
       for (int e = kLogHMin; e <= kLogHMax; ++e) {
         const double h = std::pow(10.0, e);
         const double T = std::fmin(scenes[s].T, kMaxSteps * h);
-        const Cell cell = run_cell(scene_text(0, scenes[s].gap0, scenes[s].v0, kGravity,
-                                              s == 0 ? std::optional<double>(1.0) : std::nullopt, T,
-                                              h, "fb_newton", "epsilon = " + num(eps) + "\n"),
-                                   "eps/" + scenes[s].name, T, h, 0);
+        const Cell cell =
+            run_cell(scene_text(0, scenes[s].gap0, scenes[s].v0, kGravity,
+                                s == 0 ? std::optional<double>(1.0) : std::nullopt, T, h,
+                                "fb_newton", "epsilon = " + impact::round_trip(eps) + "\n"),
+                     "eps/" + scenes[s].name, T, h, 0);
         const StabilityCheck& k = cell.check;
         ++r.runs;
         r.failures += k.outcome == Outcome::failure || k.outcome == Outcome::non_finite;
         r.energy_violations += k.outcome == Outcome::energy_grows;
         r.max_iterations = std::max(r.max_iterations, k.max_iterations);
         r.max_mean_iterations = std::fmax(r.max_mean_iterations, k.mean_iterations);
-        csv += csv_row(scenes[s].name + "," + num(eps), cell);
+        csv += csv_row(scenes[s].name + "," + impact::round_trip(eps), cell);
         map += std::to_string(s) + " " + std::to_string(le) + " " + std::to_string(e) + " " +
                std::to_string(static_cast<int>(k.outcome)) + "\n";
       }
@@ -309,10 +308,10 @@ Contact resolve_contact(const std::string& stepper, double c_N) {
   c.penetration_exact = -g_eq + std::sqrt(g_eq * g_eq + V * V / c_N);
   const double h = c.duration_exact / 200, T = 1.5 * c.duration_exact;
   try {
-    const Scene scene =
-        parse_scene(scene_text(0, 0, -V, kGravity, {}, T, h, "penalty",
-                               "stiffness = " + num(c_N) + "\nstepper = \"" + stepper + "\"\n"),
-                    "contact/" + stepper);
+    const Scene scene = parse_scene(
+        scene_text(0, 0, -V, kGravity, {}, T, h, "penalty",
+                   "stiffness = " + impact::round_trip(c_N) + "\nstepper = \"" + stepper + "\"\n"),
+        "contact/" + stepper);
     AnyStepper solver = make_stepper(scene);
     double min_gap = 0, impulse = 0, exit_time = NAN;
     State before = scene.initial;
@@ -346,7 +345,8 @@ struct StiffRun {
 
 StiffRun run_stiff(const std::string& stepper, double c_N, double gap0, double T, double h) {
   StiffRun r;
-  const std::string keys = "stiffness = " + num(c_N) + "\nstepper = \"" + stepper + "\"\n";
+  const std::string keys =
+      "stiffness = " + impact::round_trip(c_N) + "\nstepper = \"" + stepper + "\"\n";
   const std::string text = scene_text(0, gap0, 0, kGravity, {}, T, h, "penalty", keys);
   r.cell = run_cell(text, "stiff/" + stepper, T, h, kStiffBudget);
   if (r.cell.check.outcome == Outcome::ok || r.cell.check.outcome == Outcome::inaccurate) {
@@ -397,11 +397,14 @@ StiffResults run_stiff_study(const std::string& dir) {
           const Outcome o = run.cell.check.outcome;
           if (o == Outcome::ok || o == Outcome::inaccurate) r.rest_limit[st.name] = c_N;
         }
-        csv += csv_row(st.name + "," + (st.implicit ? "1" : "0") + "," + num(c_N) + "," +
-                           (scene == 0 ? "bounce" : "rest") + "," + num(run.energy_drift) + "," +
-                           num(contact.penetration) + "," + num(contact.penetration_exact) + "," +
-                           num(contact.duration) + "," + num(contact.duration_exact) + "," +
-                           num(contact.impulse),
+        csv += csv_row(st.name + "," + (st.implicit ? "1" : "0") + "," + impact::round_trip(c_N) +
+                           "," + (scene == 0 ? "bounce" : "rest") + "," +
+                           impact::round_trip(run.energy_drift) + "," +
+                           impact::round_trip(contact.penetration) + "," +
+                           impact::round_trip(contact.penetration_exact) + "," +
+                           impact::round_trip(contact.duration) + "," +
+                           impact::round_trip(contact.duration_exact) + "," +
+                           impact::round_trip(contact.impulse),
                        run.cell);
         map += std::to_string(scene) + " " + std::to_string(i) + " " + std::to_string(lc) + " " +
                std::to_string(static_cast<int>(run.cell.check.outcome)) + "\n";
@@ -422,7 +425,7 @@ StiffResults run_stiff_study(const std::string& dir) {
       for (int e = -6; e <= -1; ++e) {
         const double hh = std::pow(10.0, e), T = std::fmin(kRestT, kMaxPenaltySteps * hh);
         const StiffRun run = run_stiff(pair[i], c_N, 0, T, hh);
-        pcsv += csv_row(pair[i] + "," + num(c_N), run.cell);
+        pcsv += csv_row(pair[i] + "," + impact::round_trip(c_N), run.cell);
         pmap += std::to_string(i) + " " + std::to_string(lc) + " " + std::to_string(e) + " " +
                 std::to_string(static_cast<int>(run.cell.check.outcome)) + "\n";
       }
@@ -614,7 +617,7 @@ int main(int argc, char** argv) {
         {"eps", toml::table{{"runs", eps.runs},
                             {"failures", eps.failures},
                             {"energy_violations", eps.energy_violations},
-                                   {"max_iterations", eps.max_iterations},
+                            {"max_iterations", eps.max_iterations},
                             {"max_mean_iterations", eps.max_mean_iterations}}},
         {"penalty", stiff_table},
     };

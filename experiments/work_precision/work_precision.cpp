@@ -70,11 +70,6 @@ const std::vector<std::string> kOdeSteppers = {"rk8pd", "msbdf"};
 constexpr double kErrorFloor = 1e-10;
 const std::vector<double> kTargets = {1e-3, 1e-6};
 
-std::string num(double x) {
-  char buf[32];
-  return std::string(buf, format_double(buf, buf + sizeof buf, x));
-}
-
 std::string short_num(double x) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.3g", x);
@@ -96,9 +91,10 @@ void write_curve(const std::filesystem::path& dir, const std::string& scene, con
   std::ofstream out(dir / "curves" / (scene + "." + c.name + ".csv"));
   out << "h,tolerance,cost_min,cost_median,sup_u,l1_v,energy_end,first_impact\n";
   for (const auto& p : c.points) {
-    out << num(p.h) << "," << num(p.tolerance) << "," << num(p.cost.min) << ","
-        << num(p.cost.median);
-    for (const ErrorMeasure m : kErrorMeasures) out << "," << num(error_of(p.errors, m));
+    out << impact::round_trip(p.h) << "," << impact::round_trip(p.tolerance) << ","
+        << impact::round_trip(p.cost.min) << "," << impact::round_trip(p.cost.median);
+    for (const ErrorMeasure m : kErrorMeasures)
+      out << "," << impact::round_trip(error_of(p.errors, m));
     out << "\n";
   }
 }
@@ -209,7 +205,8 @@ int main(int argc, char** argv) {
     {
       Curve siconos{"siconos", "siconos", true, {}};
       for (const double h : siconos_steps) {
-        const Scene scene = load_scene(path, {"method.name=moreau_jean", "time.h=" + num(h)});
+        const Scene scene =
+            load_scene(path, {"method.name=moreau_jean", "time.h=" + impact::round_trip(h)});
         siconos.points.push_back(measure_point(
             [&] { return SiconosBall(scene.model, scene.initial, h, scene.grid.steps); },
             scene.model, scene.initial, scene.grid, rule));
@@ -225,11 +222,13 @@ int main(int argc, char** argv) {
                   false,
                   {}};
           for (const double tol : kTolerances)
-            c.points.push_back(measure_scene(
-                load_scene(path, {"method.name=penalty", "method.stepper=" + ode,
-                                  "method.stiffness=" + num(c_N), "method.rtol=" + num(tol),
-                                  "method.atol=" + num(tol), "time.h=" + num(kPenaltyGrid)}),
-                rule));
+            c.points.push_back(
+                measure_scene(load_scene(path, {"method.name=penalty", "method.stepper=" + ode,
+                                                "method.stiffness=" + impact::round_trip(c_N),
+                                                "method.rtol=" + impact::round_trip(tol),
+                                                "method.atol=" + impact::round_trip(tol),
+                                                "time.h=" + impact::round_trip(kPenaltyGrid)}),
+                              rule));
           curves.push_back(std::move(c));
         }
     }
@@ -240,11 +239,13 @@ int main(int argc, char** argv) {
       write_curve(dir, spec.name, c);
       curve_names += (curve_names.empty() ? "" : " ") + c.name;
       for (const auto& p : c.points) {
-        points_csv << spec.name << "," << c.name << "," << num(p.h) << "," << num(p.tolerance)
-                   << "," << p.steps;
-        for (const ErrorMeasure m : kErrorMeasures) points_csv << "," << num(error_of(p.errors, m));
-        points_csv << "," << num(p.cost.min) << "," << num(p.cost.median) << ","
-                   << p.cost.repetitions << "," << p.cost.batch << "\n";
+        points_csv << spec.name << "," << c.name << "," << impact::round_trip(p.h) << ","
+                   << impact::round_trip(p.tolerance) << "," << p.steps;
+        for (const ErrorMeasure m : kErrorMeasures)
+          points_csv << "," << impact::round_trip(error_of(p.errors, m));
+        points_csv << "," << impact::round_trip(p.cost.min) << ","
+                   << impact::round_trip(p.cost.median) << "," << p.cost.repetitions << ","
+                   << p.cost.batch << "\n";
       }
       toml::table entry;
       if (c.step_sweep) {
@@ -322,8 +323,8 @@ int main(int argc, char** argv) {
   table << "\n| scene | exact: CPU time of a solve sampled at h = 1e-3 | per grid point | per "
            "impact |\n| --- | --- | --- | --- |\n";
   for (const SceneSpec& spec : kScenes) {
-    const Scene scene =
-        load_scene(scene_path(spec), {"method.name=exact", "time.h=" + num(kPenaltyGrid)});
+    const Scene scene = load_scene(
+        scene_path(spec), {"method.name=exact", "time.h=" + impact::round_trip(kPenaltyGrid)});
     const SolveCost cost =
         time_solve([&] { return make_stepper(scene); }, scene.initial, scene.grid, rule);
     const double per_impact = exact_seconds_per_impact(ExactSolution(scene.model, scene.initial));
@@ -351,8 +352,9 @@ int main(int argc, char** argv) {
     double max_mismatch = 0;
     for (const auto& p : direct) {
       const auto pred = predict_direct_impact(t_impact, speed, p.h);
-      out << num(p.h) << "," << num(pred.theta) << "," << num(pred.effective_cor) << ","
-          << num(pred.energy_loss) << "," << num(p.errors.energy_end) << "\n";
+      out << impact::round_trip(p.h) << "," << impact::round_trip(pred.theta) << ","
+          << impact::round_trip(pred.effective_cor) << "," << impact::round_trip(pred.energy_loss)
+          << "," << impact::round_trip(p.errors.energy_end) << "\n";
       max_mismatch = std::fmax(max_mismatch, std::fabs(pred.energy_loss - p.errors.energy_end));
     }
     const auto at_min = predict_direct_impact(t_impact, speed, kStepMin);

@@ -18,22 +18,18 @@ namespace impact {
 
 namespace {
 
-// x in round-trip precision, so that the scene text holds exactly this double.
-std::string num(double x) {
-  char buf[32];
-  return std::string(buf, format_double(buf, buf + sizeof buf, x));
-}
-
 // The scene of one run, written as text so that it goes through the same validation and grid
 // rule as a scene file given to the CLI.
 Scene scene_of(std::string_view method, const Model& model, const State& initial, double T,
                double h) {
-  std::string text = "[initial]\nu0 = " + num(initial.u) + "\nv0 = " + num(initial.v) +
-                     "\n[floor]\nphi = " + num(model.phi) + "\n";
-  if (model.cor) text += "cor = " + num(*model.cor) + "\n";
-  text += "[force]\nf = " + num(model.f) + "\n[time]\nT = " + num(T) + "\nh = " + num(h) +
-          "\n[method]\nname = \"" + std::string(method) + "\"\n";
-  return parse_scene(text, "convergence(" + std::string(method) + ", h = " + num(h) + ")");
+  std::string text = "[initial]\nu0 = " + impact::round_trip(initial.u) +
+                     "\nv0 = " + impact::round_trip(initial.v) +
+                     "\n[floor]\nphi = " + impact::round_trip(model.phi) + "\n";
+  if (model.cor) text += "cor = " + impact::round_trip(*model.cor) + "\n";
+  text += "[force]\nf = " + impact::round_trip(model.f) + "\n[time]\nT = " + impact::round_trip(T) +
+          "\nh = " + impact::round_trip(h) + "\n[method]\nname = \"" + std::string(method) + "\"\n";
+  return parse_scene(text,
+                     "convergence(" + std::string(method) + ", h = " + impact::round_trip(h) + ")");
 }
 
 // GSL's adaptive Gauss-Kronrod quadrature (QAG, 21 points) of a callable over [a, b], split at
@@ -270,6 +266,20 @@ EnergyIdentity412 energy_identity_412(const ExactSolution& u, const ExactSolutio
   r.dropped_n2_w = energy(model, wt) - energy(model, w0);
   r.paper_413 = zt * zt - z0 * z0;
   return r;
+}
+
+toml::array toml_array(const std::vector<double>& values) {
+  toml::array a;
+  for (double v : values) a.push_back(v);
+  return a;
+}
+
+toml::table order_fit_table(const OrderFit& fit) {
+  return toml::table{{"order", fit.order},
+                     {"h_min", fit.h_min},
+                     {"h_max", fit.h_max},
+                     {"points", static_cast<std::int64_t>(fit.points)},
+                     {"max_log_deviation", fit.max_log_deviation}};
 }
 
 }  // namespace impact

@@ -12,6 +12,8 @@
 //  - the two sides of (4-12) for a pair of exact solutions.
 #pragma once
 
+#include <toml++/toml.h>
+
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -233,5 +235,9 @@ struct EnergyIdentity412 {
 };
 EnergyIdentity412 energy_identity_412(const ExactSolution& u, const ExactSolution& w,
                                       const Model& model, double t);
+
+// The summary.toml forms of a series and of a fitted order (the drivers' key numbers).
+toml::array toml_array(const std::vector<double>& values);
+toml::table order_fit_table(const OrderFit& fit);
 
 }  // namespace impact

@@ -141,6 +141,17 @@ void AtomicFile::commit() {
   committed_ = true;
 }
 
+std::string round_trip(double x) {
+  char buf[32];
+  return std::string(buf, format_double(buf, buf + sizeof buf, x));
+}
+
+void write_text_file(const std::string& path, const std::string& text) {
+  AtomicFile file(path);
+  std::fputs(text.c_str(), file.stream());
+  file.commit();
+}
+
 char* format_double(char* buf, char* end, double x) {
   return std::to_chars(buf, end, x, std::chars_format::general, 17).ptr;
 }

@@ -80,5 +80,9 @@ class CsvWriter {
 
 // Appends x in round-trip precision (17 significant digits) to buf; returns the new end.
 char* format_double(char* buf, char* end, double x);
+// x in round-trip precision, as a string (for scenes, summaries and messages written as text).
+std::string round_trip(double x);
+// Writes `text` to `path` through an AtomicFile: the file appears whole or not at all.
+void write_text_file(const std::string& path, const std::string& text);
 
 }  // namespace impact
