@@ -12,8 +12,11 @@
 #include <vector>
 
 #include "impact/convergence.hpp"
+#include "reference_support.hpp"
 
 using namespace impact;
+
+using namespace impact::testing;
 
 namespace {
 
@@ -24,27 +27,7 @@ constexpr double kOffGridU0 = 5.0123;
 constexpr double kCheapH = 1e-4;  // the smallest h a test recomputes
 
 const toml::table& reference() {
-  static const toml::table table =
-      toml::parse_file(std::string(IMPACT_SOURCE_DIR) + "/experiments/convergence/reference.toml");
-  return table;
-}
-
-std::vector<double> numbers(const toml::node_view<const toml::node>& node) {
-  std::vector<double> out;
-  if (const toml::array* a = node.as_array())
-    for (const toml::node& x : *a) out.push_back(x.value<double>().value());
-  return out;
-}
-
-double number(const toml::node_view<const toml::node>& node) {
-  return node.value<double>().value();
-}
-
-Model model_of(double f, std::optional<double> cor) {
-  Model m;
-  m.f = f;
-  m.cor = cor;
-  return m;
+  return reference_file("convergence");
 }
 
 // The series of the experiment (experiments/convergence/convergence.cpp), by name.

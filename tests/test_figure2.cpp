@@ -12,6 +12,7 @@
 #include <string>
 
 #include "impact/spline_contact.hpp"
+#include "reference_support.hpp"
 
 using impact::NaturalCubicSpline;
 using impact::SecondPiece;
@@ -30,22 +31,13 @@ double scale(int order, double eps) {
 }
 
 double reference(const std::string& key) {
-  static const toml::table ref =
-      toml::parse_file(IMPACT_SOURCE_DIR "/experiments/figure2/reference.toml");
-  const auto value = ref["figure2"][key].value<double>();
+  const auto value = impact::testing::reference_file("figure2")["figure2"][key].value<double>();
   INFO("key " << key);
   REQUIRE(value);
   return *value;
 }
 
 }  // namespace
-
-#define CHECK_NEAR(a, b, tol)                                                                   \
-  do {                                                                                          \
-    const double a_ = (a), b_ = (b), tol_ = (tol);                                              \
-    INFO(std::setprecision(17) << #a " = " << a_ << ", " #b " = " << b_ << ", tol = " << tol_); \
-    CHECK(std::fabs(a_ - b_) <= tol_);                                                          \
-  } while (0)
 
 TEST_CASE("Section 5.1's S_2 as printed is discontinuous at t*+eps and the corrected S_2 is C2",
           "[claim][figure2]") {

@@ -11,8 +11,11 @@
 #include <vector>
 
 #include "impact/convergence.hpp"
+#include "reference_support.hpp"
 
 using namespace impact;
+
+using namespace impact::testing;
 
 namespace {
 
@@ -21,27 +24,7 @@ constexpr double kGravity = 9.80665;
 constexpr double kT = 10.0;
 
 const toml::table& reference() {
-  static const toml::table table =
-      toml::parse_file(std::string(IMPACT_SOURCE_DIR) + "/experiments/lemma4/reference.toml");
-  return table;
-}
-
-std::vector<double> numbers(const toml::node_view<const toml::node>& node) {
-  std::vector<double> out;
-  if (const toml::array* a = node.as_array())
-    for (const toml::node& x : *a) out.push_back(x.value<double>().value());
-  return out;
-}
-
-double number(const toml::node_view<const toml::node>& node) {
-  return node.value<double>().value();
-}
-
-Model model_of(double f, std::optional<double> cor) {
-  Model m;
-  m.f = f;
-  m.cor = cor;
-  return m;
+  return reference_file("lemma4");
 }
 
 // The weak formulation holds when: u >= phi and every cell impulse >= 0 exactly (closed forms

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "impact/spline_contact.hpp"
+#include "reference_support.hpp"
 
 using impact::Lemma5Convergence;
 using impact::SplineImpact;
@@ -22,8 +23,7 @@ namespace {
 constexpr double kTStar = 5.0;
 
 double reference(const std::string& table, const std::string& key) {
-  static const toml::table ref =
-      toml::parse_file(IMPACT_SOURCE_DIR "/experiments/lemma5/reference.toml");
+  const toml::table& ref = impact::testing::reference_file("lemma5");
   const auto value = table.empty() ? ref["lemma5"][key].value<double>()
                                    : ref["lemma5"][table][key].value<double>();
   INFO("key " << table << "." << key);
@@ -32,13 +32,6 @@ double reference(const std::string& table, const std::string& key) {
 }
 
 }  // namespace
-
-#define CHECK_NEAR(a, b, tol)                                                                   \
-  do {                                                                                          \
-    const double a_ = (a), b_ = (b), tol_ = (tol);                                              \
-    INFO(std::setprecision(17) << #a " = " << a_ << ", " #b " = " << b_ << ", tol = " << tol_); \
-    CHECK(std::fabs(a_ - b_) <= tol_);                                                          \
-  } while (0)
 
 TEST_CASE("Lemma 5 as printed is wrong: N_eps = S''/6 converges to delta/2, not delta",
           "[claim][lemma5]") {
