@@ -21,7 +21,7 @@
 #include "impact/model.hpp"
 #include "impact/registry.hpp"
 #include "impact/run.hpp"
-#include "impact/scene.hpp"
+#include "scene/read_scene.hpp"
 
 using Catch::Contains;
 

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "impact/convergence.hpp"
+#include "analysis/convergence.hpp"
 #include "reference_support.hpp"
 
 using namespace impact;
@@ -84,7 +84,7 @@ Recomputed recompute(const std::string& name) {
 }
 
 double first_theta(const ConvergencePoint& p) {
-  return p.tallies.episodes.empty() ? std::nan("") : p.tallies.episodes.front().theta;
+  return p.tallies.episodes.empty() ? std::nan("") : p.tallies.episodes.front().flight_fraction;
 }
 double first_cor(const ConvergencePoint& p) {
   return p.tallies.episodes.empty() ? std::nan("") : p.tallies.episodes.front().effective_cor();
@@ -318,10 +318,11 @@ TEST_CASE("convergence: fit_order, log_spaced, step_with_fraction and TallyingSt
   ProofTallies tallies;
   TallyingStepper tallying(direct, model, 0.3, tallies);
   State s{1.0, -1.0};
-  for (std::int64_t l = 0; l < 6; ++l) tallying.step(s, l);
+  tallying.initialize(s, 0);
+  for (std::int64_t l = 0; l < 6; ++l) tallying.do_step(s, l);
   REQUIRE(tallies.episodes.size() == 1);
   CHECK(tallies.episodes[0].t_start == Approx(0.9));
-  CHECK(tallies.episodes[0].theta == Approx(1.0 / 3).epsilon(1e-12));
+  CHECK(tallies.episodes[0].flight_fraction == Approx(1.0 / 3).epsilon(1e-12));
   CHECK(tallies.episodes[0].effective_cor() == Approx(1.0 / 3).epsilon(1e-12));
   CHECK(tallies.episodes[0].steps == 1);
   CHECK(tallies.impulse == Approx(4.0 / 3).epsilon(1e-12));  // v from -1 to 1/3

@@ -16,7 +16,7 @@
 
 #include "impact/registry.hpp"
 #include "impact/run.hpp"
-#include "impact/scene.hpp"
+#include "scene/read_scene.hpp"
 
 namespace {
 

@@ -25,7 +25,7 @@
 #include <vector>
 
 #include "cli_support.hpp"
-#include "impact/scene.hpp"
+#include "scene/read_scene.hpp"
 
 using Catch::Contains;
 

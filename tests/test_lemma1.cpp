@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "impact/exact.hpp"
-#include "impact/laplace.hpp"
+#include "analysis/laplace.hpp"
 #include "impact/scene.hpp"
 
 using namespace impact;

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "impact/bounds.hpp"
+#include "analysis/bounds.hpp"
 
 using namespace impact;
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "impact/convergence.hpp"
+#include "analysis/convergence.hpp"
 #include "reference_support.hpp"
 
 using namespace impact;

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "impact/spline_contact.hpp"
+#include "analysis/spline_contact.hpp"
 #include "reference_support.hpp"
 
 using impact::Lemma5Convergence;

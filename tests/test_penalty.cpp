@@ -13,7 +13,7 @@
 
 #include "impact/penalty.hpp"
 #include "impact/registry.hpp"
-#include "impact/scene.hpp"
+#include "scene/read_scene.hpp"
 
 namespace {
 
@@ -35,9 +35,11 @@ struct Run {
   double max_energy_drift = 0;
 };
 
-// Steps l = from .. to-1; the energy drift is that of v^2/2 - f u + c_N max(phi - u, 0)^2 / 2.
+// Steps l = from .. to-1, initializing the stepper at (t_from, s) first unless it continues its
+// own integration; the energy drift is that of v^2/2 - f u + c_N max(phi - u, 0)^2 / 2.
 Run run(Penalty& pen, const Model& model, double c_N, State s, double h, std::int64_t from,
-        std::int64_t to) {
+        std::int64_t to, bool continues = false) {
+  if (!continues) pen.initialize(s, from);
   auto energy = [&](const State& x) {
     const double pen_depth = std::fmax(model.phi - x.u, 0.0);
     return 0.5 * x.v * x.v - model.f * x.u + 0.5 * c_N * pen_depth * pen_depth;
@@ -45,7 +47,7 @@ Run run(Penalty& pen, const Model& model, double c_N, State s, double h, std::in
   Run r;
   const double E0 = energy(s);
   for (std::int64_t l = from; l < to; ++l) {
-    const StepInfo info = pen.step(s, l);
+    const StepInfo info = pen.do_step(s, l);
     r.converged = r.converged && info.converged;
     r.min_N = std::fmin(r.min_N, info.contact_force);
     r.min_u = std::fmin(r.min_u, s.u);
@@ -148,9 +150,10 @@ TEST_CASE("penalty: the penetration depth falls like 1/sqrt(c_N)", "[penalty][cl
   }
 }
 
-TEST_CASE("penalty: the caller owns the state, also for a multistep method", "[penalty]") {
-  // Overwriting s at t = 3 with u = 1, v = -1 moves the contact to t = 4, so u(10) = 6 - pi/w.
-  // msbdf ignores the y it is given once started: Penalty must notice and restart it.
+TEST_CASE("penalty: initialize restarts the integration, also for a multistep method",
+          "[penalty]") {
+  // Restarting at t = 3 from u = 1, v = -1 moves the contact to t = 4, so u(10) = 6 - pi/w.
+  // msbdf ignores the y it is given once started: initialize() must reset its driver.
   const Model model{0.0, 0.0, {}};
   const double h = 0.01, c_N = 1e6;
   for (const char* stepper : {"rk8pd", "msbdf"}) {
@@ -174,10 +177,10 @@ TEST_CASE("penalty: a moved Penalty carries on its integration unchanged", "[pen
   Penalty a(model, h, p);
   State s = run(a, model, c_N, {5.0, -1.0}, h, 0, 450).s;  // stops just before the contact
   Penalty b(std::move(a));
-  s = run(b, model, c_N, s, h, 450, 502).s;  // stops inside it
+  s = run(b, model, c_N, s, h, 450, 502, true).s;  // stops inside it
   Penalty c(model, h, PenaltyParams{});
   c = std::move(b);
-  s = run(c, model, c_N, s, h, 502, 1000).s;
+  s = run(c, model, c_N, s, h, 502, 1000, true).s;
   CHECK(s.u == expected.u);
   CHECK(s.v == expected.v);
 }
@@ -188,7 +191,8 @@ TEST_CASE("penalty: a step GSL cannot complete reports non-convergence and keeps
   SECTION("a tolerance below rounding") {
     Penalty pen(model, 0.01, PenaltyParams{1e6, "rk8pd", 1e-300, 1e-300});
     State s{0.001, -1.0};
-    const StepInfo info = pen.step(s, 0);
+    pen.initialize(s, 0);
+    const StepInfo info = pen.do_step(s, 0);
     CHECK_FALSE(info.converged);
     CHECK(s.u == 0.001);
     CHECK(s.v == -1.0);
@@ -198,12 +202,14 @@ TEST_CASE("penalty: a step GSL cannot complete reports non-convergence and keeps
     const double c_N = 1e15;  // a contact of 1e-7 at t = 1e8, where ulp(t) = 1.5e-8
     Penalty pen(model, 1.0, PenaltyParams{c_N, "rk8pd", 1e-10, 1e-12});
     State s{0.0, -1.0};
-    CHECK_FALSE(pen.step(s, 100'000'000).converged);
+    pen.initialize(s, 100'000'000);
+    CHECK_FALSE(pen.do_step(s, 100'000'000).converged);
     CHECK(s.u == 0.0);
     CHECK(s.v == -1.0);
-    // The next step restarts the driver from the caller's state.
+    // initialize() restarts the driver from a new state.
     s = {0.5, -1.0};
-    const StepInfo info = pen.step(s, 0);
+    pen.initialize(s, 0);
+    const StepInfo info = pen.do_step(s, 0);
     CHECK(info.converged);
     CHECK(s.u == within(0.5 - kPi / std::sqrt(c_N), 1e-8));
     CHECK(s.v == within(1.0, 1e-8));
@@ -212,7 +218,8 @@ TEST_CASE("penalty: a step GSL cannot complete reports non-convergence and keeps
   SECTION("a non-finite state") {
     Penalty pen(model, 0.01, PenaltyParams{});
     State s{std::numeric_limits<double>::quiet_NaN(), -1.0};
-    CHECK_FALSE(pen.step(s, 0).converged);
+    pen.initialize(s, 0);
+    CHECK_FALSE(pen.do_step(s, 0).converged);
     CHECK(s.v == -1.0);
   }
 }
@@ -229,7 +236,7 @@ impact::Scene penalty_scene(const std::string& method_keys) {
 // The SceneError message that reading [method] gives, or "" when it is accepted.
 std::string read_error(const std::string& method_keys) {
   try {
-    impact::make_stepper(penalty_scene(method_keys));
+    penalty_scene(method_keys);
   } catch (const impact::SceneError& e) {
     return e.what();
   }
@@ -238,13 +245,12 @@ std::string read_error(const std::string& method_keys) {
 
 }  // namespace
 
-TEST_CASE("penalty: read_params reads stiffness, stepper, rtol and atol within their ranges",
+TEST_CASE("penalty: the scene reader reads stiffness, stepper, rtol and atol within their ranges",
           "[penalty]") {
   using Catch::Matchers::Contains;
   {
     const impact::Scene scene = penalty_scene("");
-    impact::MethodParams reader(scene);
-    const PenaltyParams p = Penalty::read_params(reader);
+    const PenaltyParams p = std::get<PenaltyParams>(scene.method);
     CHECK(p.stiffness == 1e6);
     CHECK(p.stepper == "rk8pd");
     CHECK(p.rtol == 1e-10);
@@ -253,8 +259,7 @@ TEST_CASE("penalty: read_params reads stiffness, stepper, rtol and atol within t
   {
     const impact::Scene scene =
         penalty_scene("stiffness = 1e15\nstepper = \"msbdf\"\nrtol = 1e-8\natol = 1\n");
-    impact::MethodParams reader(scene);
-    const PenaltyParams p = Penalty::read_params(reader);
+    const PenaltyParams p = std::get<PenaltyParams>(scene.method);
     CHECK(p.stiffness == 1e15);
     CHECK(p.stepper == "msbdf");
     CHECK(p.rtol == 1e-8);
@@ -294,7 +299,9 @@ TEST_CASE("error in the paper: N = c_N max(u - phi, 0) would push a particle abo
   CHECK(printed_law_at_u5 > 0);
   Penalty pen(model, h, PenaltyParams{c_N, "rk8pd", 1e-10, 1e-12});
   State above{5.0, -1.0};
-  CHECK(pen.step(above, 0).contact_force == 0.0);  // in free flight the compliance force is 0
+  pen.initialize(above, 0);
+  CHECK(pen.do_step(above, 0).contact_force == 0.0);  // in free flight the compliance force is 0
   State penetrating{-1e-4, -1.0};
-  CHECK(pen.step(penetrating, 0).contact_force > 0.0);  // it pushes back on penetration
+  pen.initialize(penetrating, 0);
+  CHECK(pen.do_step(penetrating, 0).contact_force > 0.0);  // it pushes back on penetration
 }

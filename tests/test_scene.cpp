@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "impact/scene.hpp"
+#include "scene/read_scene.hpp"
 
 using Catch::Contains;
 using impact::Channel;
@@ -78,7 +78,6 @@ struct TempDir {
 
 TEST_CASE("scene: absent tables mean phi = 0, no COR, f = 0, channels u,v every step", "[scene]") {
   impact::Scene s = parse(kBase);
-  CHECK(s.source == "scene.toml");
   CHECK(s.initial.u == 5.0);
   CHECK(s.initial.v == -1.0);
   CHECK(s.model.phi == 0.0);
@@ -87,7 +86,7 @@ TEST_CASE("scene: absent tables mean phi = 0, no COR, f = 0, channels u,v every 
   CHECK(s.T == 10.0);
   CHECK(s.grid.h == 0.001);
   CHECK(s.grid.steps == 10000);
-  CHECK(s.method == "direct");
+  CHECK(impact::method_name(s.method) == "direct");
   CHECK(s.output.channels == std::vector<Channel>{Channel::u, Channel::v});
   CHECK(s.output.every == 1);
 }
@@ -106,8 +105,10 @@ TEST_CASE("scene: every table given is read", "[scene]") {
   REQUIRE(s.model.cor.has_value());
   CHECK(*s.model.cor == 0.75);
   CHECK(s.model.f == -9.80665);
-  CHECK(s.method == "fb_newton");
-  CHECK(s.method_params["epsilon"].value<double>() == 1e-12);
+  CHECK(impact::method_name(s.method) == "fb_newton");
+  REQUIRE(std::holds_alternative<impact::FbNewtonParams>(s.method));
+  CHECK(std::get<impact::FbNewtonParams>(s.method).epsilon == 1e-12);
+  CHECK(std::get<impact::FbNewtonParams>(s.method).max_iterations == 20);
   CHECK(s.output.channels == std::vector<Channel>{Channel::E, Channel::iterations, Channel::u});
   CHECK(s.output.every == 10);
 }
@@ -118,9 +119,8 @@ TEST_CASE("scene: the experiment scenes load", "[scene]") {
                            "figure4/cor075.toml"}) {
     INFO(name);
     impact::Scene s = impact::load_scene(dir + name);
-    CHECK(s.source == dir + name);
     CHECK(s.grid.steps == 10000);
-    CHECK(s.method == "direct");
+    CHECK(impact::method_name(s.method) == "direct");
     CHECK(s.output.channels ==
           std::vector<Channel>{Channel::u, Channel::v, Channel::N, Channel::E});
   }
@@ -142,7 +142,7 @@ TEST_CASE("scene: integers are accepted where numbers are expected", "[scene]") 
   CHECK(s.grid.h == 1.0);
   CHECK(s.grid.steps == 10);
   // Integer method keys, too (fb_newton's epsilon is a number).
-  CHECK(parse(with_method("[method]\nname = \"fb_newton\"\nepsilon = 1\n")).method == "fb_newton");
+  CHECK(impact::method_name(parse(with_method("[method]\nname = \"fb_newton\"\nepsilon = 1\n")).method) == "fb_newton");
 }
 
 TEST_CASE("scene: steps is T/h rounded when within 1e-9 relative, else ceil(T/h)", "[scene]") {
@@ -301,7 +301,7 @@ TEST_CASE("scene: the method and its keys are checked", "[scene]") {
   CHECK_SCENE_ERROR(
       parse(with_method("[method]\nname = \"fb_newton\"\nepsilom = 1e-12\n")),
       Contains("method.epsilom") && Contains("allowed: name, epsilon, tolerance, max_iterations"));
-  CHECK(parse(with_method("[method]\nname = \"moreau_jean\"\ntheta = 0.5\n")).method ==
+  CHECK(impact::method_name(parse(with_method("[method]\nname = \"moreau_jean\"\ntheta = 0.5\n")).method) ==
         "moreau_jean");
 
   // fb_newton ranges.
@@ -318,7 +318,7 @@ TEST_CASE("scene: the method and its keys are checked", "[scene]") {
                     Contains("method.theta = 1.5") && Contains("must be in [0, 1]"));
 
   // penalty ranges and stepper names.
-  CHECK(parse(with_method("[method]\nname = \"penalty\"\nstiffness = 1e7\n")).method == "penalty");
+  CHECK(impact::method_name(parse(with_method("[method]\nname = \"penalty\"\nstiffness = 1e7\n")).method) == "penalty");
   CHECK_SCENE_ERROR(
       parse(with_method("[method]\nname = \"penalty\"\nstiffness = 0.0\n")),
       Contains("scene.toml") && Contains("method.stiffness = 0:") && Contains("must be in (0, "));
@@ -360,16 +360,14 @@ TEST_CASE("scene: --set overrides and adds keys before validation", "[scene]") {
   impact::Scene s = parse(kBase, {"time.h=1e-4"});
   CHECK(s.grid.h == 1e-4);
   CHECK(s.grid.steps == 100000);
-  CHECK(s.document["time"]["h"].value<double>() == 1e-4);  // the document is what ran
 
   s = parse(kBase, {"floor.cor=0.5"});
   CHECK(s.model.cor == 0.5);
-  CHECK(s.document["floor"]["cor"].value<double>() == 0.5);
 
   s = parse(kBase, {"method.name=exact"});  // a bare word is read as a string
-  CHECK(s.method == "exact");
+  CHECK(impact::method_name(s.method) == "exact");
   s = parse(kBase, {"method.name=\"moreau_jean\"", "method.theta=1"});
-  CHECK(s.method == "moreau_jean");
+  CHECK(impact::method_name(s.method) == "moreau_jean");
   s = parse(kBase, {"output.channels=[\"u\", \"E\"]", "output.every=10", "time.T=1"});
   CHECK(s.output.channels == std::vector<Channel>{Channel::u, Channel::E});
   CHECK(s.output.every == 10);

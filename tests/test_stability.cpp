@@ -21,8 +21,8 @@
 #include "impact/output.hpp"
 #include "impact/registry.hpp"
 #include "impact/run.hpp"
-#include "impact/scene.hpp"
-#include "impact/stability.hpp"
+#include "scene/read_scene.hpp"
+#include "analysis/stability.hpp"
 
 using namespace impact;
 
@@ -352,7 +352,8 @@ TEST_CASE("stability: fb_newton's N is the root of (5-3), also where the smoothi
     FbNewton solver(Model{0.0, 0.0, {}}, h, params);
     State s{0.0, d / h};  // f = 0: x_free = h v0
     const SmoothedEquation e{h * s.v, h, eps};
-    const StepInfo info = solver.step(s, 0);
+    solver.initialize(s, 0);
+    const StepInfo info = solver.do_step(s, 0);
     REQUIRE(info.converged);
     const double root = root_velocity(e);
     // Velocity h N against the root's, relative to the smoothing's own scale sqrt(eps) (what

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "impact/exact.hpp"
-#include "impact/scene.hpp"
-#include "impact/work_precision.hpp"
+#include "scene/read_scene.hpp"
+#include "analysis/work_precision.hpp"
 
 using namespace impact;
 

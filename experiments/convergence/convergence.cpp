@@ -13,7 +13,7 @@
 //   path_theta_<k>.csv      t, u_h, u_exact for theta = 0, 1/4, 1/2, 3/4 (k = 0..3) at m = 250,
 //                           with the exact solution of COR |1 - 2 theta| on the same grid
 //   summary.toml            the numbers of reference.toml
-#include "impact/convergence.hpp"
+#include "analysis/convergence.hpp"
 
 #include <toml++/toml.h>
 
@@ -100,7 +100,7 @@ const std::vector<std::int64_t> kSubsequenceM = {250,   500,   1000,   2500,   5
                                                  25000, 50000, 100000, 250000, 1000000, 5000000};
 
 double first_theta(const ConvergencePoint& p) {
-  return p.tallies.episodes.empty() ? std::nan("") : p.tallies.episodes.front().theta;
+  return p.tallies.episodes.empty() ? std::nan("") : p.tallies.episodes.front().flight_fraction;
 }
 double first_cor(const ConvergencePoint& p) {
   return p.tallies.episodes.empty() ? std::nan("") : p.tallies.episodes.front().effective_cor();

@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "impact/output.hpp"
-#include "impact/spline_contact.hpp"
+#include "analysis/spline_contact.hpp"
 
 namespace {
 

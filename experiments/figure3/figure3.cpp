@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "impact/output.hpp"
-#include "impact/rest.hpp"
-#include "impact/scene.hpp"
+#include "analysis/rest.hpp"
+#include "scene/read_scene.hpp"
 
 namespace {
 
@@ -86,7 +86,7 @@ std::string energy_sweep(const std::string& scene_path, toml::table& summary) {
     const RestAnalysis direct = analyse_rest(load_scene(scene_path, {step, "method.name=direct"}));
     const RestAnalysis fb_newton =
         analyse_rest(load_scene(scene_path, {step, "method.name=fb_newton"}));
-    const double theta = direct.episodes.front().theta;
+    const double theta = direct.episodes.front().linear_fraction;
     const double ratio = direct.energy_final / direct.energy_initial;
     csv << impact::round_trip(h) << ',' << impact::round_trip(theta) << ','
         << impact::round_trip(ratio) << ','
@@ -136,9 +136,9 @@ int main(int argc, char** argv) {
     summary.insert("off_grid",
                    toml::table{
                        {"h", 3e-4},
-                       {"theta", impact.theta},
+                       {"theta", impact.linear_fraction},
                        {"energy_loss", impact.energy_before - impact.energy_after},
-                       {"energy_loss_predicted", 2 * impact.theta * (1 - impact.theta) *
+                       {"energy_loss_predicted", 2 * impact.linear_fraction * (1 - impact.linear_fraction) *
                                                      impact.speed_before * impact.speed_before},
                        {"energy_final", off_grid.energy_final},
                    });

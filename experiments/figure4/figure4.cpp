@@ -20,8 +20,8 @@
 
 #include "impact/exact.hpp"
 #include "impact/output.hpp"
-#include "impact/rest.hpp"
-#include "impact/scene.hpp"
+#include "analysis/rest.hpp"
+#include "scene/read_scene.hpp"
 
 namespace {
 
@@ -69,7 +69,7 @@ toml::table column(const std::string& dir, const std::string& name) {
   const Scene direct_scene = scene_for(dir, name, "direct");
   const RestAnalysis direct = analyse_rest(direct_scene);
   const ContactEpisode& first = direct.episodes.front();
-  t.insert("first_impact_theta", first.theta);
+  t.insert("first_impact_theta", first.linear_fraction);
   t.insert("first_impact_speed", first.speed_before);
   // (4-6) for the first impact: the step removes N^l (u^l - phi) = 2 theta (1 - theta) v^2 +
   // |f| theta h |v| without COR; with COR the velocity -COR v^l replaces (4-2), so the step
@@ -77,8 +77,8 @@ toml::table column(const std::string& dir, const std::string& name) {
   const double v = first.speed_before, g = -direct_scene.model.f, h = direct_scene.grid.h;
   const double kinetic = direct_scene.model.cor
                              ? (1 - *direct_scene.model.cor * *direct_scene.model.cor) * v * v / 2
-                             : 2 * first.theta * (1 - first.theta) * v * v;
-  t.insert("first_impact_loss_predicted", kinetic + g * first.theta * h * v);
+                             : 2 * first.linear_fraction * (1 - first.linear_fraction) * v * v;
+  t.insert("first_impact_loss_predicted", kinetic + g * first.linear_fraction * h * v);
   const ChannelDifference d =
       max_difference(record(direct_scene), record(scene_for(dir, name, "fb_newton")));
   t.insert("max_diff_u", d.u);

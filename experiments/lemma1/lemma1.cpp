@@ -20,9 +20,9 @@
 #include <vector>
 
 #include "impact/exact.hpp"
-#include "impact/laplace.hpp"
+#include "analysis/laplace.hpp"
 #include "impact/output.hpp"
-#include "impact/scene.hpp"
+#include "scene/read_scene.hpp"
 
 namespace {
 

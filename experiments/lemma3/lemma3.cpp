@@ -13,7 +13,7 @@
 #include <sstream>
 #include <string>
 
-#include "impact/bounds.hpp"
+#include "analysis/bounds.hpp"
 #include "impact/output.hpp"
 
 namespace {

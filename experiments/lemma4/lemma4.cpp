@@ -29,7 +29,7 @@
 #include <utility>
 #include <vector>
 
-#include "impact/convergence.hpp"
+#include "analysis/convergence.hpp"
 #include "impact/exact.hpp"
 #include "impact/output.hpp"
 

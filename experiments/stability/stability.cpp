@@ -11,7 +11,7 @@
 //   labels.gp                 tic labels for plot.gp
 //   table.md                  the README table (experiment.mk splices it into README.md)
 //   summary.toml              the key numbers (reference.toml has the same keys)
-#include "impact/stability.hpp"
+#include "analysis/stability.hpp"
 
 #include <toml++/toml.h>
 
@@ -32,7 +32,7 @@
 #include "impact/output.hpp"
 #include "impact/registry.hpp"
 #include "impact/run.hpp"
-#include "impact/scene.hpp"
+#include "scene/read_scene.hpp"
 
 namespace {
 

@@ -12,7 +12,7 @@
 //   orders.md                        the table of observed orders and costs to reach an error
 //   summary.toml                     the key numbers (reference.toml keys)
 // Usage: exp_work_precision RESULTS_DIR
-#include "impact/work_precision.hpp"
+#include "analysis/work_precision.hpp"
 
 #include <toml++/toml.h>
 
@@ -33,7 +33,7 @@
 #include "impact/exact.hpp"
 #include "impact/output.hpp"
 #include "impact/registry.hpp"
-#include "impact/scene.hpp"
+#include "scene/read_scene.hpp"
 #ifdef IMPACT_HAVE_SICONOS
 #include "siconos_ball.hpp"
 #endif

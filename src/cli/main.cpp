@@ -14,7 +14,7 @@
 #include "impact/output.hpp"
 #include "impact/registry.hpp"
 #include "impact/run.hpp"
-#include "impact/scene.hpp"
+#include "scene/read_scene.hpp"
 
 namespace {
 
@@ -87,11 +87,8 @@ int run(const std::string& scene_path, const std::vector<std::string>& overrides
         const std::string& out_path, bool quiet) {
   using namespace impact;
   const auto start = Clock::now();
-  Scene scene;
-  AnyStepper stepper = [&] {
-    scene = load_scene(scene_path, overrides);
-    return make_stepper(scene);
-  }();
+  Run loaded = load_run(scene_path, overrides);
+  const Scene& scene = loaded.scene;
   const bool to_stdout = out_path.empty() || out_path == "-";
   if (!to_stdout && same_file(out_path, scene_path))
     throw OutputError(out_path + ": --out names the scene file itself; give another file name",
@@ -119,7 +116,7 @@ int run(const std::string& scene_path, const std::vector<std::string>& overrides
     // Rows are due only at multiples of `every` and at the last step.
     next_event = std::min(every < last - l ? l + every : last, next_check);
   };
-  RunSummary summary = simulate(stepper, scene.initial, scene.grid,
+  RunSummary summary = simulate(loaded.stepper, scene.initial, scene.grid,
                                 [&](std::int64_t l, const State& s, const StepInfo& info) {
                                   if (l == next_event) [[unlikely]]
                                     event(l, s, info);
@@ -128,10 +125,11 @@ int run(const std::string& scene_path, const std::vector<std::string>& overrides
   progress.finish();
   const double seconds = seconds_since(start);
   if (!quiet) {
-    std::fprintf(stderr, "impact: %s, %lld steps, %lld contact steps", scene.method.c_str(),
+    const MethodInfo& method = method_info(scene.method);
+    std::fprintf(stderr, "impact: %s, %lld steps, %lld contact steps", method.name.data(),
                  static_cast<long long>(summary.steps),
                  static_cast<long long>(summary.contact_steps));
-    if (find_method(scene.method)->has_iterations)
+    if (method.has_iterations)
       std::fprintf(stderr, ", %lld iterations (max %d per step)",
                    static_cast<long long>(summary.iterations), summary.max_iterations);
     std::fprintf(stderr, ", %.3f s wall\n", seconds);

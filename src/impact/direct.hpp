@@ -9,8 +9,6 @@
 
 namespace impact {
 
-class MethodParams;
-
 // What direct carries from step to step, for one particle (Real = double) or for a vector of
 // particles (the ensemble, ensemble.hpp). Between contacts the scheme is the closed-form free
 // flight from the anchor (free_flight.hpp explains why it is not stepped increment by increment).
@@ -55,21 +53,18 @@ struct DirectParams {};
 
 class Direct {
  public:
-  static DirectParams read_params(MethodParams&) { return {}; }
   Direct(const Model& model, double h, const DirectParams&)
       : phi_(model.phi), f_(model.f), cor_(model.cor.value_or(0.0)), has_cor_(model.cor), h_(h) {}
 
-  StepInfo step(State& s, std::int64_t l) {
-    // Starts a new free flight at (l, s) unless s is the state the last step produced at t_l.
-    if (l != next_l_ || s.u != lanes_.u || s.v != lanes_.v) {
-      lanes_.anchor_u = s.u;
-      lanes_.anchor_v = s.v;
-      lanes_.since = 0;
-    }
-    lanes_.u = s.u;
-    lanes_.v = s.v;
+  // A free flight starts at s: the anchor of the closed form (free_flight.hpp).
+  void initialize(const State& s, std::int64_t) {
+    lanes_.anchor_u = lanes_.u = s.u;
+    lanes_.anchor_v = lanes_.v = s.v;
+    lanes_.since = 0;
+  }
+
+  StepInfo do_step(State& s, std::int64_t) {
     direct_step(lanes_, phi_, f_, cor_, has_cor_, h_);
-    next_l_ = l + 1;
     s = {lanes_.u, lanes_.v};
     StepInfo info;
     info.contact_force = lanes_.contact_force;
@@ -81,7 +76,6 @@ class Direct {
   bool has_cor_;
   double h_;
   DirectLanes<double> lanes_;
-  std::int64_t next_l_ = -1;
 };
 
 }  // namespace impact

@@ -33,8 +33,6 @@
 
 namespace impact {
 
-class MethodParams;
-
 class ExactSolution {
  public:
   ExactSolution(const Model& model, const State& initial);
@@ -66,26 +64,32 @@ class ExactSolution {
 
 struct ExactParams {};
 
+// The exact solution as a stepper: sampled at the grid times after the state it was initialized
+// with, so that it runs wherever a time-stepper does.
 class ExactStepper {
  public:
-  static ExactParams read_params(MethodParams&) { return {}; }
-  ExactStepper(const Model& model, double h, const ExactParams&, const State& initial)
-      : solution_(model, initial), model_(model), h_(h) {}
+  ExactStepper(const Model& model, double h, const ExactParams&) : model_(model), h_(h) {}
 
-  // Samples the exact solution at t_{l+1} = (l+1) h; N^l = impulse in (t_l, t_{l+1}] / h.
-  StepInfo step(State& s, std::int64_t l) const {
-    const double t0 = static_cast<double>(l) * h_, t1 = static_cast<double>(l + 1) * h_;
-    s = solution_.at(t1);
+  // The solution from (t_l, s); throws std::invalid_argument where ExactSolution does.
+  void initialize(const State& s, std::int64_t l) {
+    solution_.emplace(model_, s);
+    l0_ = l;
+  }
+
+  // Samples the solution at t_{l+1}; N^l = impulse in (t_l, t_{l+1}] / h.
+  StepInfo do_step(State& s, std::int64_t l) const {
+    const double t0 = static_cast<double>(l - l0_) * h_, t1 = static_cast<double>(l + 1 - l0_) * h_;
+    s = solution_->at(t1);
     StepInfo info;
-    info.contact_force = solution_.impulse(t0, t1) / h_;
+    info.contact_force = solution_->impulse(t0, t1) / h_;
     return info;
   }
-  const ExactSolution& solution() const { return solution_; }
 
  private:
-  ExactSolution solution_;
   Model model_;
   double h_;
+  std::optional<ExactSolution> solution_;
+  std::int64_t l0_ = 0;
 };
 
 }  // namespace impact

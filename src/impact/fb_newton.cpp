@@ -5,7 +5,6 @@
 #include <sstream>
 
 #include "impact/restitution.hpp"
-#include "impact/scene.hpp"
 
 namespace impact {
 namespace {
@@ -30,13 +29,9 @@ Root smoothed_root(double d, double h, double eps) {
 
 }  // namespace
 
-FbNewtonParams FbNewton::read_params(MethodParams& p) {
-  FbNewtonParams params;
-  params.epsilon = p.number("epsilon", params.epsilon, 0.0, 1.0, true);
-  params.tolerance = p.number("tolerance", params.tolerance, 0.0, 1e-1, true);
-  params.max_iterations =
-      static_cast<int>(p.integer("max_iterations", params.max_iterations, 1, 10000));
-  return params;
+void FbNewton::initialize(const State& s, std::int64_t l) {
+  gap_ = {s.u - model_.phi, s.v};
+  flight_.start(l, gap_);
 }
 
 // Newton on S(x) = F_eps(x, N(x)) with x = u^{l+1} - phi (the gap) and
@@ -76,12 +71,11 @@ FbNewtonParams FbNewton::read_params(MethodParams& p) {
 // h eps / (2 |x_free|) in velocity (closed form), within that bound when
 // |x_free| >= h sqrt(eps) / (2 kSmoothingCheck): it needs no check, which keeps the check off the
 // common contact step.
-StepInfo FbNewton::step(State& s, std::int64_t l) {
+StepInfo FbNewton::do_step(State& s, std::int64_t l) {
   constexpr double kSmoothingCheck = 0.1;
   const double phi = model_.phi, h = h_, eps = params_.epsilon;
   const double k = 2 / (h * h);
-  if (l != next_l_ || s.u != returned_.u || s.v != returned_.v) gap_ = {s.u - phi, s.v};
-  const State free = flight_.predict(gap_, l);  // x_free = g^l + h v^l + h^2 f/2, see FreeFlight
+  const State free = flight_.predict(l);  // x_free = g^l + h v^l + h^2 f/2, see FreeFlight
   const double x_free = free.u;
   double x = std::fmax(x_free, 0.0);
   StepInfo info;
@@ -141,19 +135,17 @@ StepInfo FbNewton::step(State& s, std::int64_t l) {
   info.contact_force = b;
   if (b == 0) {
     gap_ = free;  // N^l = 0: the free flight goes on
-    flight_.accept(l + 1, gap_, true);
   } else {
     const double v_scheme = free.v + h * b;  // (4-1), equal to (4-2) at the solution
     // The COR law acts where the unsmoothed (4-3) has N^l > 0, i.e. where the free flight ends
     // below the floor: the same steps as in direct, not those the smoothing alone pushes.
+    const double v_before = gap_.v;
     gap_.u = x;
-    velocity_after_step(model_.cor.has_value(), model_.cor.value_or(0.0), x_free < 0, s.v,
+    velocity_after_step(model_.cor.has_value(), model_.cor.value_or(0.0), x_free < 0, v_before,
                         v_scheme, gap_.v);
-    flight_.accept(l + 1, gap_, false);
+    flight_.start(l + 1, gap_);
   }
   s = {phi + gap_.u, gap_.v};
-  returned_ = s;
-  next_l_ = l + 1;
   return info;
 }
 

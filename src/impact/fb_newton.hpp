@@ -12,17 +12,14 @@
 
 namespace impact {
 
-class MethodParams;
-
 struct FbNewtonParams {
   double epsilon = 1e-15;    // smoothing parameter (paper: 1e-15)
-  double tolerance = 1e-15;  // relative residual, see FbNewton::step (paper: 1e-15)
+  double tolerance = 1e-15;  // relative residual, see FbNewton::do_step (paper: 1e-15)
   int max_iterations = 50;
 };
 
 class FbNewton {
  public:
-  static FbNewtonParams read_params(MethodParams& p);
   FbNewton(const Model& model, double h, const FbNewtonParams& params)
       : model_(model),
         h_(h),
@@ -30,7 +27,9 @@ class FbNewton {
         sqrt_eps_(std::sqrt(params.epsilon)),
         flight_(model.f, h) {}
 
-  StepInfo step(State& s, std::int64_t l);
+  // Works in gap coordinates (u - phi, v) from here on, see do_step.
+  void initialize(const State& s, std::int64_t l);
+  StepInfo do_step(State& s, std::int64_t l);
 
   // Why the last step did not converge: the residual it reached, for simulate()'s message.
   std::string failure_reason() const;
@@ -40,12 +39,10 @@ class FbNewton {
   double h_;
   FbNewtonParams params_;
   double sqrt_eps_;    // the velocity scale of the smoothing, see step()
-  FreeFlight flight_;  // in gap coordinates (u - phi, v), see step()
-  // The state at t_l in gap coordinates as the last step computed it, the state it returned (with
-  // u = phi + gap rounded), and the l it is at: a caller's state equal to `returned_` at
-  // `next_l_` continues from `gap_`.
-  State gap_, returned_;
-  std::int64_t next_l_ = -1;
+  FreeFlight flight_;  // in gap coordinates (u - phi, v), see do_step()
+  // The state at t_l in gap coordinates as the last step computed it (the caller's u is
+  // phi + gap, rounded).
+  State gap_;
   // The last Newton solve, for failure_reason().
   double residual_ = 0, threshold_ = 0, force_ = 0;
   int iterations_ = 0;

@@ -25,38 +25,30 @@ void free_flight(const Real& u_a, const Real& v_a, const Real& t, const Scalar& 
   v = v_a + t * f;
 }
 
+// The closed-form free flight of a stepper that steps one particle (fb_newton): anchored where the
+// last contact ended, or where the run started.
 class FreeFlight {
  public:
   FreeFlight(double f, double h) : f_(f), h_(h) {}
 
-  // The state at t_{l+1} if no contact force acts in the step from (t_l, s). Starts a new free
-  // flight at (l, s) unless s is the state this predictor produced last at t_l.
-  State predict(const State& s, std::int64_t l) {
-    if (l != last_l_ || s.u != last_.u || s.v != last_.v) {
-      anchor_l_ = l;
-      anchor_ = s;
-    }
+  // A free flight starts at (t_l, s).
+  void start(std::int64_t l, const State& s) {
+    anchor_l_ = l;
+    anchor_ = s;
+  }
+
+  // The state at t_{l+1} if no contact force has acted since the anchor.
+  State predict(std::int64_t l) const {
     const double t = static_cast<double>(l + 1 - anchor_l_) * h_;
     State next;
     free_flight(anchor_.u, anchor_.v, t, f_, next.u, next.v);
     return next;
   }
 
-  // Records the accepted state at t_l; a state that is not the free prediction (a contact step)
-  // starts a new free flight there.
-  void accept(std::int64_t l, const State& s, bool free) {
-    if (!free) {
-      anchor_l_ = l;
-      anchor_ = s;
-    }
-    last_l_ = l;
-    last_ = s;
-  }
-
  private:
   double f_, h_;
-  std::int64_t anchor_l_ = 0, last_l_ = -1;
-  State anchor_, last_;
+  std::int64_t anchor_l_ = 0;
+  State anchor_;
 };
 
 }  // namespace impact

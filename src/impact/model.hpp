@@ -2,6 +2,7 @@
 // with an optional coefficient of restitution (Section 5.2) and a constant body force f.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <optional>
 
@@ -39,6 +40,16 @@ struct Grid {
   double h = 0.0;
   std::int64_t steps = 0;
   double t(std::int64_t l) const { return static_cast<double>(l) * h; }
+
+  // The grid of step h that covers [0, T]: steps = T/h when T/h is within 1e-9 relative of a
+  // whole number (so that T = 10, h = 0.001 gives 10000 steps despite the rounding of 0.001),
+  // else ceil(T/h). T/h must be at most 2^53 (the scene reader checks it).
+  static Grid covering(double T, double h) {
+    const double ratio = T / h, rounded = std::round(ratio);
+    return {h, static_cast<std::int64_t>(std::abs(ratio - rounded) <= 1e-9 * rounded
+                                             ? rounded
+                                             : std::ceil(ratio))};
+  }
 };
 
 }  // namespace impact

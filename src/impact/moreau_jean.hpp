@@ -13,8 +13,6 @@
 
 namespace impact {
 
-class MethodParams;
-
 // One step of Moreau-Jean for one particle (Real = double) or a vector of particles (the ensemble,
 // ensemble.hpp): the same operations in the same order for both, the branches taken as
 // selections, so that each lane of the ensemble is bit-identical to the single-particle solver.
@@ -43,11 +41,13 @@ struct MoreauJeanParams {
 
 class MoreauJean {
  public:
-  static MoreauJeanParams read_params(MethodParams& p);
   MoreauJean(const Model& model, double h, const MoreauJeanParams& params)
       : phi_(model.phi), f_(model.f), h_(h), theta_(params.theta), e_(model.cor.value_or(1.0)) {}
 
-  StepInfo step(State& s, std::int64_t) const {
+  // Moreau-Jean carries nothing but the state itself from step to step.
+  void initialize(const State&, std::int64_t) {}
+
+  StepInfo do_step(State& s, std::int64_t) const {
     StepInfo info;
     moreau_jean_step(s.u, s.v, info.contact_force, phi_, f_, e_, theta_, h_);
     return info;

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <climits>
+#include <iterator>
 #include <cmath>
 #include <limits>
 #include <new>
@@ -13,31 +14,26 @@
 #include <sstream>
 #include <stdexcept>
 #include <string_view>
-#include <vector>
 
-#include "impact/scene.hpp"
+#include "impact/gsl_errors.hpp"
 
 namespace impact {
 namespace {
 
-struct StepperType {
-  std::string_view name;
-  const gsl_odeiv2_step_type* const* type;  // GSL exports the types as pointer variables
-};
-
-// Every odeiv2 stepper. The implicit ones (rk1imp, rk2imp, rk4imp, bsimp, msbdf) use the Jacobian.
-const StepperType kSteppers[] = {
-    {"rk8pd", &gsl_odeiv2_step_rk8pd},     {"rkf45", &gsl_odeiv2_step_rkf45},
-    {"rkck", &gsl_odeiv2_step_rkck},       {"rk4", &gsl_odeiv2_step_rk4},
-    {"rk2", &gsl_odeiv2_step_rk2},         {"msbdf", &gsl_odeiv2_step_msbdf},
-    {"msadams", &gsl_odeiv2_step_msadams}, {"rk4imp", &gsl_odeiv2_step_rk4imp},
-    {"rk2imp", &gsl_odeiv2_step_rk2imp},   {"rk1imp", &gsl_odeiv2_step_rk1imp},
-    {"bsimp", &gsl_odeiv2_step_bsimp},
-};
+// Every odeiv2 stepper, by name. The implicit ones (rk1imp, rk2imp, rk4imp, bsimp, msbdf) use the
+// Jacobian. GSL exports the types as pointer variables.
+constexpr std::string_view kStepperNames[] = {"rk8pd", "rkf45",  "rkck",   "rk4",    "rk2",  "msbdf",
+                                              "msadams", "rk4imp", "rk2imp", "rk1imp", "bsimp"};
+const gsl_odeiv2_step_type* const* const kStepperTypes[] = {
+    &gsl_odeiv2_step_rk8pd,   &gsl_odeiv2_step_rkf45,  &gsl_odeiv2_step_rkck,
+    &gsl_odeiv2_step_rk4,     &gsl_odeiv2_step_rk2,    &gsl_odeiv2_step_msbdf,
+    &gsl_odeiv2_step_msadams, &gsl_odeiv2_step_rk4imp, &gsl_odeiv2_step_rk2imp,
+    &gsl_odeiv2_step_rk1imp,  &gsl_odeiv2_step_bsimp};
+static_assert(std::size(kStepperNames) == std::size(kStepperTypes));
 
 const gsl_odeiv2_step_type* find_stepper(std::string_view name) {
-  for (const auto& s : kSteppers)
-    if (s.name == name) return *s.type;
+  for (std::size_t i = 0; i < std::size(kStepperNames); ++i)
+    if (kStepperNames[i] == name) return *kStepperTypes[i];
   return nullptr;
 }
 
@@ -116,10 +112,6 @@ struct Penalty::Impl {
   std::unique_ptr<gsl_odeiv2_driver, DriverFree> driver;
   std::array<double, 3> y{};
   bool contact_piece = false;  // the piece being integrated is a contact, for the Jacobian at g = 0
-  // What the last successful step left: its l + 1 and the state it wrote to the caller's s.
-  bool needs_reset = true;  // before the next step: the first one, or the last one failed
-  std::int64_t next_l = 0;
-  State last;
   // The last failed step, for failure_reason().
   std::string stepper_name;
   double rtol, atol;
@@ -142,12 +134,9 @@ Penalty::Impl::Impl(const Model& model, double grid_h, const PenaltyParams& para
   rtol = params.rtol;
   atol = params.atol;
   w = std::sqrt(c_N);
+  const GslErrorsAsStatus errors_as_status;
   const double contact_time = std::numbers::pi / w;  // the duration of a contact when f = 0
   tiny = 1e-6 * contact_time;
-  // GSL's default error handler aborts the process (e.g. on "step size too small"); every GSL
-  // status is checked here instead. The handler is process-wide state, so this also silences it
-  // for any other GSL user in the program, who must then check statuses too.
-  gsl_set_error_handler_off();
   sys = gsl_odeiv2_system{&Impl::rhs, &Impl::jacobian, 3, this};
   // The first trial step resolves a contact; it grows by up to 5x per step in free flight.
   driver.reset(gsl_odeiv2_driver_alloc_y_new(&sys, type, std::min(h, contact_time / 16),
@@ -182,15 +171,8 @@ int Penalty::Impl::jacobian(double, const double y[], double* dfdy, double dfdt[
   return GSL_SUCCESS;
 }
 
-PenaltyParams Penalty::read_params(MethodParams& p) {
-  PenaltyParams params;
-  params.stiffness = p.number("stiffness", params.stiffness, 0.0, 1e15, true);
-  std::vector<std::string_view> names;
-  for (const auto& s : kSteppers) names.push_back(s.name);
-  params.stepper = p.choice("stepper", params.stepper, names);
-  params.rtol = p.number("rtol", params.rtol, 0.0, 1.0, true);
-  params.atol = p.number("atol", params.atol, 0.0, 1.0, true);
-  return params;
+std::span<const std::string_view> penalty_stepper_names() {
+  return kStepperNames;
 }
 
 Penalty::Penalty(const Model& model, double h, const PenaltyParams& params)
@@ -202,10 +184,8 @@ Penalty::~Penalty() = default;
 // One grid step, t_l = l h to t_{l+1} = (l+1) h, both computed from l (never accumulated).
 //
 // Driver state: the adapted step size (and a multistep method's history) is kept from one grid
-// step to the next; that is what makes free flight cost about one ODE step per grid step. The
-// driver is reset only when the caller's state is not the one the previous step produced (a
-// different l, or s changed in between) or that step failed: msbdf and msadams ignore the y they
-// are given once started, so a changed state would otherwise be silently dropped.
+// step to the next; that is what makes free flight cost about one ODE step per grid step. Only
+// initialize() resets the driver: msbdf and msadams ignore the y they are given once started.
 //
 // Pieces: the right-hand side is only Lipschitz where the particle reaches or leaves the floor
 // (N has a kink there). A step that straddles a kink loses the stepper's order while its error
@@ -222,14 +202,18 @@ Penalty::~Penalty() = default;
 // non-finite state) gives converged = false and leaves s at its t_l value (finite if it was).
 //
 // The COR of the model is not used: compliance is its own impact law (elastic here, COR = 1).
-StepInfo Penalty::step(State& s, std::int64_t l) {
+void Penalty::initialize(const State& s, std::int64_t) {
+  Impl& m = *impl_;
+  gsl_odeiv2_driver_reset(m.driver.get());
+  m.y = {s.u - m.phi, s.v, 0.0};
+}
+
+StepInfo Penalty::do_step(State& s, std::int64_t l) {
   Impl& m = *impl_;
   gsl_odeiv2_driver* d = m.driver.get();
-  if (m.needs_reset || l != m.next_l || s.u != m.last.u || s.v != m.last.v) {
-    gsl_odeiv2_driver_reset(d);
-    m.y = {s.u - m.phi, s.v, 0.0};
-  }
-  m.needs_reset = true;  // until this step succeeds
+  // GSL's default handler would abort the process (e.g. on "step size too small"); every status
+  // is checked here instead.
+  const GslErrorsAsStatus errors_as_status;
   const double P0 = m.y[2];
   double t = static_cast<double>(l) * m.h;
   const double t_end = static_cast<double>(l + 1) * m.h;
@@ -273,9 +257,6 @@ StepInfo Penalty::step(State& s, std::int64_t l) {
   info.contact_force = (m.y[2] - P0) / m.h;
   s.u = m.y[0] + m.phi;
   s.v = m.y[1];
-  m.last = s;
-  m.next_l = l + 1;
-  m.needs_reset = false;
   return info;
 }
 

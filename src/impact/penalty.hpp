@@ -6,13 +6,13 @@
 
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <string>
+#include <string_view>
 
 #include "impact/model.hpp"
 
 namespace impact {
-
-class MethodParams;
 
 struct PenaltyParams {
   double stiffness = 1e6;         // c_N
@@ -21,17 +21,22 @@ struct PenaltyParams {
   double atol = 1e-12;
 };
 
+// The names PenaltyParams::stepper accepts: every GSL odeiv2 stepper.
+std::span<const std::string_view> penalty_stepper_names();
+
 class Penalty {
  public:
-  static PenaltyParams read_params(MethodParams& p);
+  // Throws std::invalid_argument for parameters outside their ranges or an unknown stepper.
   Penalty(const Model& model, double h, const PenaltyParams& params);
   Penalty(Penalty&&) noexcept;
   Penalty& operator=(Penalty&&) noexcept;
   ~Penalty();
 
+  // Starts the ODE driver afresh at (t_l, s): a multistep method's history is dropped.
+  void initialize(const State& s, std::int64_t l);
   // Integrates from t_l to t_{l+1}; N^l is the impulse of the compliance force over the step / h,
   // iterations the number of GSL steps taken.
-  StepInfo step(State& s, std::int64_t l);
+  StepInfo do_step(State& s, std::int64_t l);
 
   // Why the last step did not converge (the GSL status and where it stopped), for simulate()'s
   // message.

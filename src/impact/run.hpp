@@ -59,9 +59,10 @@ template <class Stepper, class Observer>
                                                    const Grid& grid, Observer& observe) {
   RunSummary summary;
   State s = initial;
+  stepper.initialize(s, 0);
   observe(std::int64_t{0}, s, StepInfo{});
   for (std::int64_t l = 0; l < grid.steps; ++l) {
-    const StepInfo info = stepper.step(s, l);
+    const StepInfo info = stepper.do_step(s, l);
     if (!(std::isfinite(s.u) && std::isfinite(s.v) && std::isfinite(info.contact_force)) ||
         !info.converged) [[unlikely]]
       throw_step_failure(stepper, l, grid.t(l), s, info);
@@ -77,23 +78,19 @@ template <class Stepper, class Observer>
 
 }  // namespace detail
 
-// observe(l, state at t_l, info of the step that ended at t_l; zero for l = 0).
+// Initializes the stepper at (t_0, initial) and runs it over the grid; observe(l, state at t_l,
+// info of the step that ended at t_l; zero for l = 0) sees every step.
 //
-// The step loop is where a run spends its time, so it is written for the compiler. Measured with
-// `impact run` on Figure 3's scene, 1e8 steps, decimated output, ns per step for direct /
-// moreau_jean / fb_newton: 10.2 / 8.3 / 20.5 before, 2.8 / 2.4 / 15.4 after these points and the
-// observer of src/cli/main.cpp (experiments/performance/README.md):
+// The step loop is where a run spends its time, so it is written for the compiler (the measured
+// effect of each point is in experiments/performance/README.md):
 //  - the loop is a function of its own (noinline), so that its registers are allocated for the
-//    loop alone and not inside a large caller;
-//  - it steps a local copy of the stepper, moved back when the run ends: a stepper that other code
-//    can reach (in a variant, on the heap) has its members kept in memory across the loop, a local
-//    one in registers. Moving it back also on an exception (a scope guard, or a catch) made GCC
-//    keep the local in memory as well (7.6 or 7.4 instead of 3.0 ns per direct step on Figure 4's
-//    COR scene), so after a NumericalError the stepper is valid but moved from: destroy it or
-//    assign it, but make a new one to run again;
-//  - each step's StepInfo is a fresh constant: assigned to a variable living across the loop, GCC
-//    copied its 13 bytes with two overlapping 8-byte moves whose load waits for the store before it
-//    (store-to-load forwarding fails);
+//    loop alone;
+//  - it steps a local copy of the stepper, moved back when the run ends: the members of a stepper
+//    that other code can reach (in a variant, on the heap) stay in memory across the loop, those of
+//    a local one in registers. Moving it back on an exception too made GCC keep the local in
+//    memory, so after a NumericalError the stepper is valid but moved from: initialize a new one;
+//  - each step's StepInfo is a fresh constant (assigned to a variable living across the loop, its
+//    13 bytes were copied with overlapping moves that defeat store-to-load forwarding);
 //  - the observer is inlined; it should do its rare work (a CSV row) out of line, on copies, so
 //    that nothing on its common path takes the address of the loop's state.
 template <class Stepper, class Observer>
@@ -105,7 +102,7 @@ template <class Stepper, class Observer>
     stepper = std::move(local);
     return summary;
   } else {
-    // A stepper that holds references (a wrapper such as convergence.hpp's) steps in place.
+    // A stepper that holds references (a wrapper that tallies or pairs steppers) steps in place.
     return detail::step_loop(stepper, initial, grid, observe);
   }
 }

@@ -18,7 +18,7 @@
 #include "impact/output.hpp"
 #include "impact/registry.hpp"
 #include "impact/run.hpp"
-#include "impact/scene.hpp"
+#include "scene/read_scene.hpp"
 
 namespace {
 

@@ -1,21 +1,13 @@
 // Analysis of a run for Section 5.2 (Figures 3 and 4): when the particle comes to rest, how much
-// energy each impact removes, and how far two methods' trajectories are apart.
-//
-// A step (t_l, t_{l+1}] "ends in contact" when the pair (u^{l+1} - phi, N^l) of (4-3) is on its
-// force branch, N^l > u^{l+1} - phi: the test the schemes themselves use to apply a COR
-// (restitution.hpp, fb_newton.cpp). For `direct` it means N^l > 0 (a contact step ends at
-// u^{l+1} = phi exactly); for `fb_newton`, whose smoothed pair near the floor has
-// (u^{l+1} - phi) N^l = eps/2, it is the branch on which fb_newton applies the COR, so no length
-// threshold is needed (a step that would end less than sqrt(eps/2), 2.2e-8 m for eps = 1e-15,
-// above phi is already on it); for `exact` it means an impact in the step or resting (N = -f). A
-// contact episode is a maximal run of consecutive contact steps: one impact (one step, or two when
-// the scheme holds the particle on the floor) or, when it lasts to the end of the run, rest.
+// energy each impact removes, and how far two methods' trajectories are apart. Contact steps and
+// episodes are those of impact/contact.hpp.
 #pragma once
 
 #include <cstdint>
 #include <optional>
 #include <vector>
 
+#include "impact/contact.hpp"
 #include "impact/model.hpp"
 #include "impact/scene.hpp"
 
@@ -44,18 +36,6 @@ struct RunStats {
 };
 RunStats run_stats(const std::vector<Sample>& run, double h);
 
-struct ContactEpisode {
-  std::int64_t first_step = 0;  // l: the step (t_l, t_{l+1}] that starts the episode
-  std::int64_t steps = 0;       // consecutive contact steps, l .. l + steps - 1
-  // Fraction of step l flown before the floor, (u^l - phi) / (h |v^l|) for v^l < 0, else 0. The
-  // direct scheme without COR rebounds with |v^l| (1 - 2 theta) and removes
-  // N^l (u^l - phi) = 2 theta (1 - theta) (v^l)^2 + |f| theta h |v^l| by (4-6).
-  double theta = 0;
-  double speed_before = 0;   // |v^l|
-  double energy_before = 0;  // E^l (4-5)
-  double energy_after = 0;   // E at the end of the episode
-};
-
 // Shortest final episode that counts as rest: an impact of `direct` lasts one step, or two when
 // theta > 1/2; with a COR every scheme impact lasts one step.
 constexpr std::int64_t kMinRestSteps = 3;
@@ -77,17 +57,17 @@ struct RestAnalysis {
 // Streams a run (an observer for simulate()) and builds its RestAnalysis in O(episodes) memory.
 class RestObserver {
  public:
-  RestObserver(const Model& model, const Grid& grid) : model_(model), grid_(grid) {}
+  RestObserver(const Model& model, const Grid& grid)
+      : model_(model), grid_(grid), contacts_(model, grid.h) {}
   void operator()(std::int64_t l, const State& s, const StepInfo& info);
   RestAnalysis result() const;
 
  private:
   Model model_;
   Grid grid_;
+  ContactDetector contacts_;
   State previous_;
-  bool previous_contact_ = false;
-  double energy_sum_ = 0;
-  RestAnalysis analysis_;
+  double energy_initial_ = 0, energy_final_ = 0, energy_sum_ = 0;
 };
 
 // Runs the scene's method through a RestObserver.

@@ -1,4 +1,4 @@
-// Errors of a time-stepper against the exact event-driven solution, accumulated while the run
+// Error norms of a time-stepper against the exact event-driven solution, accumulated while the run
 // streams (no trajectory is stored).
 #pragma once
 

@@ -1,4 +1,4 @@
-#include "impact/rest.hpp"
+#include "analysis/rest.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -51,33 +51,23 @@ RunStats run_stats(const std::vector<Sample>& run, double h) {
 
 void RestObserver::operator()(std::int64_t l, const State& s, const StepInfo& info) {
   const double E = energy(model_, s);
-  if (l == 0) {
-    analysis_.energy_initial = E;
-  } else if (info.contact_force > s.u - model_.phi) {  // step l - 1 ends in contact
-    if (!previous_contact_) {
-      ContactEpisode episode;
-      episode.first_step = l - 1;
-      episode.speed_before = std::fabs(previous_.v);
-      episode.theta = previous_.v < 0 ? (previous_.u - model_.phi) / (grid_.h * -previous_.v) : 0.0;
-      episode.energy_before = energy(model_, previous_);
-      analysis_.episodes.push_back(episode);
-    }
-    ++analysis_.episodes.back().steps;
-    analysis_.episodes.back().energy_after = E;
-    previous_contact_ = true;
-  } else {
-    previous_contact_ = false;
-  }
-  analysis_.energy_final = E;
+  if (l == 0)
+    energy_initial_ = E;
+  else
+    contacts_.add_step(l - 1, previous_, s, info.contact_force);
+  energy_final_ = E;
   energy_sum_ += E;
   previous_ = s;
 }
 
 RestAnalysis RestObserver::result() const {
-  RestAnalysis analysis = analysis_;
+  RestAnalysis analysis;
+  analysis.episodes = contacts_.episodes();
+  analysis.energy_initial = energy_initial_;
+  analysis.energy_final = energy_final_;
   analysis.impacts = static_cast<std::int64_t>(analysis.episodes.size());
   analysis.energy_mean = energy_sum_ / static_cast<double>(grid_.steps + 1);
-  if (previous_contact_ && analysis.episodes.back().steps >= kMinRestSteps) {
+  if (contacts_.in_contact() && analysis.episodes.back().steps >= kMinRestSteps) {
     analysis.rest_time = grid_.t(analysis.episodes.back().first_step + 1);
     --analysis.impacts;
   }

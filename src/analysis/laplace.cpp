@@ -1,4 +1,4 @@
-#include "impact/laplace.hpp"
+#include "analysis/laplace.hpp"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_integration.h>
@@ -13,7 +13,7 @@
 #include "impact/gsl_errors.hpp"
 #include "impact/registry.hpp"
 #include "impact/run.hpp"
-#include "impact/scene.hpp"
+#include "scene/read_scene.hpp"
 
 namespace impact {
 

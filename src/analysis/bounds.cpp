@@ -1,4 +1,4 @@
-#include "impact/bounds.hpp"
+#include "analysis/bounds.hpp"
 
 #include <algorithm>
 #include <cmath>

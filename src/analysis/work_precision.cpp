@@ -1,4 +1,4 @@
-#include "impact/work_precision.hpp"
+#include "analysis/work_precision.hpp"
 
 #include <cmath>
 #include <cstdlib>
@@ -8,6 +8,7 @@
 
 #include "impact/output.hpp"
 #include "impact/registry.hpp"
+#include "scene/read_scene.hpp"
 
 namespace impact {
 
@@ -48,7 +49,7 @@ double error_of(const ErrorNorms& e, ErrorMeasure m) {
 WorkPrecisionPoint measure_scene(const Scene& scene, const std::optional<TimingRule>& rule) {
   WorkPrecisionPoint p = measure_point([&] { return make_stepper(scene); }, scene.model,
                                        scene.initial, scene.grid, rule);
-  if (scene.method == "penalty") p.tolerance = MethodParams(scene).number("rtol", 0, 0, 1);
+  if (const auto* penalty = std::get_if<PenaltyParams>(&scene.method)) p.tolerance = penalty->rtol;
   return p;
 }
 
@@ -57,11 +58,10 @@ std::vector<WorkPrecisionPoint> sweep_steps(const std::string& scene_path,
                                             const std::vector<double>& steps,
                                             const std::optional<TimingRule>& rule) {
   std::vector<WorkPrecisionPoint> points;
+  Scene scene = load_scene(scene_path, overrides);
   for (const double h : steps) {
-    std::vector<std::string> with_h = overrides;
-    char buf[32];
-    with_h.push_back("time.h=" + std::string(buf, format_double(buf, buf + sizeof buf, h)));
-    points.push_back(measure_scene(load_scene(scene_path, with_h), rule));
+    scene.grid = Grid::covering(scene.T, h);
+    points.push_back(measure_scene(scene, rule));
   }
   return points;
 }

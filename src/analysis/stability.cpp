@@ -1,4 +1,4 @@
-#include "impact/stability.hpp"
+#include "analysis/stability.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -44,21 +44,18 @@ StabilityCheck check_stability(const Scene& scene, const StabilityOptions& optio
   const Grid& grid = scene.grid;
   const ExactSolution exact(model, scene.initial);
   StabilityCheck check;
-  const bool scheme = scene.method == "direct" || scene.method == "fb_newton";
-  check.energy_bound = scheme || scene.method == "exact";
+  const std::string_view method = method_name(scene.method);
+  const bool scheme = method == "direct" || method == "fb_newton";
+  check.energy_bound = scheme || method == "exact";
   // fb_newton's smoothed pair has a N = eps/2 at the root of (5-3), which (4-6) turns into
   // E^{l+1} - E^l = a N - N^l (u^l - phi) <= eps/2. Newton stops at a residual S with
   // |S| <= tolerance max(1, a, N), and 2 a N - eps = S (a + N + sqrt(a^2 + N^2 + eps)), so
   // a N <= eps/2 + tolerance max(1, a, N) (a + N + sqrt(eps)); or it stops at the double nearest
   // the root, where N = (2/h^2)(a - a_free) is resolved to (2/h^2) ulp(a): a N within
   // 2 eps_mach a (2 a / h^2 + N) of the root's.
-  bool smoothed = false;
-  FbNewtonParams fb;
-  if (scene.method == "fb_newton") {
-    MethodParams reader(scene);
-    fb = FbNewton::read_params(reader);
-    smoothed = true;
-  }
+  const auto* fb_params = std::get_if<FbNewtonParams>(&scene.method);
+  const bool smoothed = fb_params != nullptr;
+  const FbNewtonParams fb = smoothed ? *fb_params : FbNewtonParams{};
   const double f = std::fabs(model.f);
 
   AnyStepper stepper = make_stepper(scene);

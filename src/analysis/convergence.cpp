@@ -1,4 +1,4 @@
-#include "impact/convergence.hpp"
+#include "analysis/convergence.hpp"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_fit.h>
@@ -12,24 +12,18 @@
 #include "impact/gsl_errors.hpp"
 #include "impact/output.hpp"
 #include "impact/registry.hpp"
-#include "impact/scene.hpp"
+#include "scene/read_scene.hpp"
 
 namespace impact {
 
 namespace {
 
-// The scene of one run, written as text so that it goes through the same validation and grid
-// rule as a scene file given to the CLI.
+// The scene of one run, with the scene reader's grid rule and the method's default parameters.
 Scene scene_of(std::string_view method, const Model& model, const State& initial, double T,
                double h) {
-  std::string text = "[initial]\nu0 = " + impact::round_trip(initial.u) +
-                     "\nv0 = " + impact::round_trip(initial.v) +
-                     "\n[floor]\nphi = " + impact::round_trip(model.phi) + "\n";
-  if (model.cor) text += "cor = " + impact::round_trip(*model.cor) + "\n";
-  text += "[force]\nf = " + impact::round_trip(model.f) + "\n[time]\nT = " + impact::round_trip(T) +
-          "\nh = " + impact::round_trip(h) + "\n[method]\nname = \"" + std::string(method) + "\"\n";
-  return parse_scene(text,
-                     "convergence(" + std::string(method) + ", h = " + impact::round_trip(h) + ")");
+  const MethodInfo* info = find_method(method);
+  if (!info) throw std::invalid_argument("unknown method '" + std::string(method) + "'");
+  return make_scene(model, initial, T, h, info->defaults);
 }
 
 // GSL's adaptive Gauss-Kronrod quadrature (QAG, 21 points) of a callable over [a, b], split at

@@ -11,7 +11,7 @@
 #include <string>
 #include <string_view>
 
-#include "impact/scene.hpp"
+#include "scene/read_scene.hpp"
 
 namespace impact {
 

@@ -1,4 +1,4 @@
-#include "impact/spline_contact.hpp"
+#include "analysis/spline_contact.hpp"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_fit.h>

@@ -12,8 +12,8 @@
 #include <string_view>
 #include <vector>
 
-#include "impact/convergence.hpp"
-#include "impact/errors.hpp"
+#include "analysis/convergence.hpp"
+#include "impact/error_norms.hpp"
 #include "impact/model.hpp"
 #include "impact/run.hpp"
 #include "impact/scene.hpp"

@@ -24,30 +24,13 @@
 #include <string_view>
 #include <vector>
 
-#include "impact/errors.hpp"
+#include "impact/contact.hpp"
+#include "impact/error_norms.hpp"
 #include "impact/exact.hpp"
 #include "impact/model.hpp"
 #include "impact/run.hpp"
 
 namespace impact {
-
-// A contact episode: consecutive contact steps, those with N^l > 0 or ending on the floor (a scheme
-// may need two steps for one impact).
-struct ContactEpisode {
-  double t_start = 0;  // t_l of the first contact step
-  // theta = s / h, s the time the free flight from (u^l, v^l) at the start of the first contact
-  // step takes to reach the floor: the fraction of the step left before the impact (f = 0:
-  // (u^l - phi) / (h |v^l|)). NaN when the particle starts below the floor (a scheme that does
-  // not project) or does not move towards it.
-  double theta = std::numeric_limits<double>::quiet_NaN();
-  // Speeds at the floor before and after, from the discrete energy (4-5), which the scheme
-  // conserves exactly in free flight: V = sqrt(2 (E - E_floor)), E_floor = -f phi.
-  double speed_in = 0;
-  double speed_out = 0;
-  int steps = 0;
-  // The COR the scheme realised, -v_a / v_b in the paper's notation.
-  double effective_cor() const { return speed_out / speed_in; }
-};
 
 // The discrete quantities of Section 4, summed over the steps l = 0..n-1 of a run.
 struct ProofTallies {
@@ -55,7 +38,7 @@ struct ProofTallies {
   double complementarity = 0;            // h sum N^l (u^{l+1} - phi): (4-10), 0 by (4-3)
   double energy_drop = 0;                // sum N^l (u^l - phi): E^0 - E^n by (4-6) (without COR)
   State last;                            // u^n, v^n: the state after the last step
-  std::vector<ContactEpisode> episodes;  // the first kMaxEpisodes only
+  std::vector<ContactEpisode> episodes;  // the first kMaxEpisodes only (contact.hpp)
   static constexpr std::size_t kMaxEpisodes = 64;
 };
 
@@ -67,53 +50,35 @@ class TallyingStepper {
   TallyingStepper(Stepper& inner, const Model& model, double h, ProofTallies& tallies)
       : inner_(inner), model_(model), h_(h), tallies_(tallies) {}
 
-  StepInfo step(State& s, std::int64_t l) {
+  void initialize(const State& s, std::int64_t l) {
+    inner_.initialize(s, l);
+    contacts_ = ContactDetector(model_, h_, ProofTallies::kMaxEpisodes);
+  }
+
+  StepInfo do_step(State& s, std::int64_t l) {
     const State before = s;
-    const StepInfo info = inner_.step(s, l);
+    const StepInfo info = inner_.do_step(s, l);
     const double N = info.contact_force, phi = model_.phi;
     tallies_.impulse += h_ * N;
     tallies_.complementarity += h_ * N * (s.u - phi);
     tallies_.energy_drop += N * (before.u - phi);
-    // A step that ends on (or, for a scheme that does not project, below) the floor is a contact
-    // step even when its N^l is 0: direct at a grid-aligned impact, where the impulse comes one
-    // step later, or where a COR overwrites the velocity.
-    const bool contact = N > 0 || s.u <= phi;
-    auto& episodes = tallies_.episodes;
-    if (contact && !in_contact_ && episodes.size() < ProofTallies::kMaxEpisodes) {
-      ContactEpisode e;
-      e.t_start = static_cast<double>(l) * h_;
-      e.theta = crossing_fraction(before);
-      e.speed_in = floor_speed(before);
-      episodes.push_back(e);
-      recording_ = true;
-    } else if (!contact && in_contact_) {
-      recording_ = false;
+    if (contacts_.add_step(l, before, s, N)) {  // mirror the detector's episodes in the tallies
+      const std::vector<ContactEpisode>& found = contacts_.episodes();
+      if (found.size() > tallies_.episodes.size())
+        tallies_.episodes.push_back(found.back());
+      else if (!found.empty())
+        tallies_.episodes.back() = found.back();
     }
-    if (contact && recording_) {
-      episodes.back().steps += 1;
-      episodes.back().speed_out = floor_speed(s);
-    }
-    in_contact_ = contact;
     tallies_.last = s;
     return info;
   }
 
  private:
-  // The root s of (u - phi) + v s + f s^2 / 2 = 0 reached first, 2 d / (V + |v|) with
-  // V = sqrt(v^2 - 2 f d) the speed at the floor (no cancellation), over h.
-  double crossing_fraction(const State& s) const {
-    const double d = s.u - model_.phi, discriminant = s.v * s.v - 2 * model_.f * d;
-    if (d < 0 || s.v >= 0 || discriminant < 0) return std::numeric_limits<double>::quiet_NaN();
-    return 2 * d / (std::sqrt(discriminant) - s.v) / h_;
-  }
-  double floor_speed(const State& s) const {
-    return std::sqrt(std::fmax(0.0, 2 * (energy(model_, s) + model_.f * model_.phi)));
-  }
   Stepper& inner_;
   Model model_;
   double h_;
   ProofTallies& tallies_;
-  bool in_contact_ = false, recording_ = false;
+  ContactDetector contacts_{model_, h_, ProofTallies::kMaxEpisodes};
 };
 
 // One run of a method on [0, T] with step h against the exact solution.
@@ -153,9 +118,15 @@ class LockstepStepper {
   LockstepStepper(A& a, B& b, const State& initial, double h)
       : a_(a), b_(b), other_(initial), h_(h) {}
 
-  StepInfo step(State& s, std::int64_t l) {
-    const StepInfo info = a_.step(s, l);
-    const StepInfo other_info = b_.step(other_, l);
+  void initialize(const State& s, std::int64_t l) {
+    a_.initialize(s, l);
+    b_.initialize(s, l);
+    other_ = s;
+  }
+
+  StepInfo do_step(State& s, std::int64_t l) {
+    const StepInfo info = a_.do_step(s, l);
+    const StepInfo other_info = b_.do_step(other_, l);
     if (!(std::isfinite(other_.u) && std::isfinite(other_.v)) || !other_info.converged) [[unlikely]]
       throw_step_failure(l, static_cast<double>(l) * h_, other_, other_info);
     sup_distance_ = std::fmax(sup_distance_, std::fabs(s.u - other_.u));

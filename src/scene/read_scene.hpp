@@ -1,0 +1,30 @@
+// The scene reader: a scene file (TOML) and --set overrides into a validated Scene (impact/scene.hpp).
+// A scene states only what it needs; what it leaves out is absent, not zero.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "impact/registry.hpp"
+#include "impact/scene.hpp"
+#include "scene/scene_error.hpp"
+
+namespace impact {
+
+// Reads and validates a scene file; `overrides` are "table.key=value" strings (the value is read
+// as a TOML value, or as a string when it is a bare word) applied before validation. Throws
+// SceneError.
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides = {});
+// The same from text in memory; `source` names it in messages.
+Scene parse_scene(std::string_view text, const std::string& source,
+                  const std::vector<std::string>& overrides = {});
+
+// A scene and its solver, built once.
+struct Run {
+  Scene scene;
+  AnyStepper stepper;
+};
+Run load_run(const std::string& path, const std::vector<std::string>& overrides = {});
+
+}  // namespace impact
