@@ -14,6 +14,7 @@
 //                           with the exact solution of COR |1 - 2 theta| on the same grid
 //   summary.toml            the numbers of reference.toml
 #include "analysis/convergence.hpp"
+#include "analysis/experiment.hpp"
 
 #include <toml++/toml.h>
 

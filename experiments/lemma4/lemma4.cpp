@@ -30,6 +30,7 @@
 #include <vector>
 
 #include "analysis/convergence.hpp"
+#include "analysis/experiment.hpp"
 #include "impact/exact.hpp"
 #include "impact/output.hpp"
 

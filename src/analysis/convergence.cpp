@@ -1,15 +1,12 @@
 #include "analysis/convergence.hpp"
 
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_fit.h>
-#include <gsl/gsl_integration.h>
-
 #include <algorithm>
 #include <memory>
 #include <stdexcept>
 #include <variant>
 
-#include "impact/gsl_errors.hpp"
+#include "analysis/experiment.hpp"
+#include "analysis/quadrature.hpp"
 #include "impact/output.hpp"
 #include "impact/registry.hpp"
 #include "scene/read_scene.hpp"
@@ -25,56 +22,6 @@ Scene scene_of(std::string_view method, const Model& model, const State& initial
   if (!info) throw std::invalid_argument("unknown method '" + std::string(method) + "'");
   return make_scene(model, initial, T, h, info->defaults);
 }
-
-// GSL's adaptive Gauss-Kronrod quadrature (QAG, 21 points) of a callable over [a, b], split at
-// the points where the integrand has kinks or jumps (the impact times), so that each piece is
-// smooth. QAG on each piece rather than QAGP on the whole: QAGP's extrapolation misreads the
-// crowd of tiny jumps before a Zeno point as a divergence.
-class Quadrature {
- public:
-  Quadrature() : workspace_(gsl_integration_workspace_alloc(kLimit)) {
-    if (!workspace_) throw std::bad_alloc();
-  }
-  Quadrature(const Quadrature&) = delete;
-  Quadrature& operator=(const Quadrature&) = delete;
-  ~Quadrature() { gsl_integration_workspace_free(workspace_); }
-
-  // Throws std::runtime_error when GSL reports a failure other than round-off (the error
-  // handler is off meanwhile, so that GSL returns its status instead of aborting).
-  template <class F>
-  double integrate(F&& integrand, double a, double b, const std::vector<double>& kinks) {
-    std::vector<double> points{a};
-    for (double t : kinks)
-      if (t > a && t < b) points.push_back(t);
-    points.push_back(b);
-    std::sort(points.begin(), points.end());
-    gsl_function fn;
-    fn.function = [](double t, void* p) { return (*static_cast<F*>(p))(t); };
-    fn.params = &integrand;
-    double total = 0;
-    const GslErrorsAsStatus guard;
-    for (std::size_t i = 0; i + 1 < points.size(); ++i) {
-      if (!(points[i + 1] > points[i])) continue;
-      double result = 0, abserr = 0;
-      const int status =
-          gsl_integration_qag(&fn, points[i], points[i + 1], kAbsTol, kRelTol, kLimit,
-                              GSL_INTEG_GAUSS21, workspace_, &result, &abserr);
-      // GSL_EROUND: the integrand is at the round-off level of its magnitude (e.g. int u psi''
-      // with u linear on the support, exactly 0), and the result is that level; accepted.
-      if (status != GSL_SUCCESS && status != GSL_EROUND)
-        throw std::runtime_error(std::string("GSL quadrature failed: ") + gsl_strerror(status));
-      total += result;
-    }
-    return total;
-  }
-
- private:
-  // Each piece is a polynomial (u, v, I between impacts) times a smooth bump: the 21-point rule
-  // reaches the round-off level with few subdivisions.
-  static constexpr double kAbsTol = 1e-13, kRelTol = 1e-12;
-  static constexpr std::size_t kLimit = 2000;
-  gsl_integration_workspace* workspace_;
-};
 
 // The impact times in (0, T] and the time the particle comes to rest, if it does: where u has kinks
 // and the cumulative impulse jumps. Before a Zeno accumulation the impact times crowd together;
@@ -144,38 +91,6 @@ double sup_distance(const ExactSolution& u, const ExactSolution& w, double T) {
   return sup;
 }
 
-OrderFit fit_order(std::span<const double> h, std::span<const double> err) {
-  if (h.size() != err.size()) throw std::invalid_argument("fit_order: h and err differ in size");
-  std::vector<double> x, y;
-  for (std::size_t i = 0; i < h.size(); ++i)
-    if (err[i] > 0 && h[i] > 0) {
-      x.push_back(std::log(h[i]));
-      y.push_back(std::log(err[i]));
-    }
-  OrderFit fit;
-  fit.points = x.size();
-  if (x.size() < 2) return fit;
-  double c0 = 0, c1 = 0, cov00 = 0, cov01 = 0, cov11 = 0, sumsq = 0;
-  gsl_fit_linear(x.data(), 1, y.data(), 1, x.size(), &c0, &c1, &cov00, &cov01, &cov11, &sumsq);
-  fit.order = c1;
-  fit.log_constant = c0;
-  fit.h_min = std::exp(*std::min_element(x.begin(), x.end()));
-  fit.h_max = std::exp(*std::max_element(x.begin(), x.end()));
-  for (std::size_t i = 0; i < x.size(); ++i)
-    fit.max_log_deviation = std::fmax(fit.max_log_deviation, std::fabs(y[i] - (c0 + c1 * x[i])));
-  return fit;
-}
-
-std::vector<double> log_spaced(double h_max, double h_min, int n) {
-  std::vector<double> h;
-  for (int i = 0; i < n; ++i)
-    h.push_back(n == 1 ? h_max : h_max * std::pow(h_min / h_max, static_cast<double>(i) / (n - 1)));
-  return h;
-}
-
-// psi = exp(g(s)), g = -1 / (1 - s^2): g' = -2 s / (1 - s^2)^2, g'' = -(2 + 6 s^2) / (1 - s^2)^3,
-// psi' = psi g' / r, psi'' = psi (g'^2 + g'') / r^2. Where 1 - s^2 < 1e-3, psi < e^-1000 underflows
-// to 0 while the powers of 1 / (1 - s^2) could overflow, so 0 is returned there.
 double Bump::value(double t) const {
   const double s = (t - center) / radius, q = 1 - s * s;
   return q < 1e-3 ? 0.0 : std::exp(-1 / q);
@@ -216,11 +131,14 @@ WeakSolutionCheck check_weak_solution(const ExactSolution& x, const Model& model
 
   // (2-2), N (u - phi) = 0: int_(0,T] (u - phi) dI with I(t) = impulse(0, t) the cumulative
   // impulse, by parts for the continuous u: (u(T) - phi) I(T) - int_0^T I u' dt.
+  // Each piece is a polynomial (u, v, I between impacts) times a smooth bump: the 21-point rule
+  // reaches the round-off level with few subdivisions.
   Quadrature quad;
+  const Quadrature::Rule rule{1e-13, 1e-12, GSL_INTEG_GAUSS21};
   const auto cumulative = [&](double t) { return x.impulse(0, t); };
-  check.complementarity =
-      (x.at(T).u - model.phi) * check.total_impulse -
-      quad.integrate([&](double t) { return cumulative(t) * x.at(t).v; }, 0, T, kinks);
+  check.complementarity = (x.at(T).u - model.phi) * check.total_impulse -
+                          quad.integrate([&](double t) { return cumulative(t) * x.at(t).v; }, 0, T,
+                                         kinks, rule, "weak solution check");
 
   // (2-1) in the sense of distributions: int u psi'' = int psi dN + f int psi, where
   // int psi dN = -int psi' I dt (psi vanishes at the ends of its support). The bumps cover [0, T]
@@ -235,11 +153,12 @@ WeakSolutionCheck check_weak_solution(const ExactSolution& x, const Model& model
   }
   for (const Bump& psi : bumps) {
     const double a = psi.center - psi.radius, b = psi.center + psi.radius;
-    const double u_psi2 =
-        quad.integrate([&](double t) { return x.at(t).u * psi.second(t); }, a, b, kinks);
-    const double psi_dN =
-        -quad.integrate([&](double t) { return psi.first(t) * cumulative(t); }, a, b, kinks);
-    const double f_psi = model.f * quad.integrate([&](double t) { return psi.value(t); }, a, b, {});
+    const double u_psi2 = quad.integrate([&](double t) { return x.at(t).u * psi.second(t); }, a, b,
+                                         kinks, rule, "weak solution check");
+    const double psi_dN = -quad.integrate([&](double t) { return psi.first(t) * cumulative(t); }, a,
+                                          b, kinks, rule, "weak solution check");
+    const double f_psi = model.f * quad.integrate([&](double t) { return psi.value(t); }, a, b, {},
+                                                  rule, "weak solution check");
     check.max_weak_residual =
         std::fmax(check.max_weak_residual, std::fabs(u_psi2 - psi_dN - f_psi));
     check.max_weak_scale = std::fmax(check.max_weak_scale, std::fabs(u_psi2));
@@ -260,12 +179,6 @@ EnergyIdentity412 energy_identity_412(const ExactSolution& u, const ExactSolutio
   r.dropped_n2_w = energy(model, wt) - energy(model, w0);
   r.paper_413 = zt * zt - z0 * z0;
   return r;
-}
-
-toml::array toml_array(const std::vector<double>& values) {
-  toml::array a;
-  for (double v : values) a.push_back(v);
-  return a;
 }
 
 toml::table order_fit_table(const OrderFit& fit) {

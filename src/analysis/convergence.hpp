@@ -5,7 +5,6 @@
 //    sum of (4-9), the complementarity sum of (4-10), the energy drop of (4-6), and each contact
 //    episode with the effective coefficient of restitution the scheme realised;
 //  - measure_convergence(): one run against the exact solution (measure_errors) plus those tallies;
-//  - fit_order(): the least-squares order p of err ~ C h^p (GSL);
 //  - check_weak_solution(): whether an exact solution satisfies (2-1)-(2-4) in the weak sense the
 //    proof's limit has (u >= phi, N >= 0 as a measure, int (u - phi) dN = 0, and
 //    int u psi'' = int psi dN + f int psi for smooth test functions psi, by GSL quadrature);
@@ -24,6 +23,7 @@
 #include <string_view>
 #include <vector>
 
+#include "analysis/fit.hpp"
 #include "impact/contact.hpp"
 #include "impact/error_norms.hpp"
 #include "impact/exact.hpp"
@@ -152,19 +152,6 @@ double sup_distance(std::string_view method_a, std::string_view method_b, const 
 // before a Zeno point that impact_times() leaves out.
 double sup_distance(const ExactSolution& u, const ExactSolution& w, double T);
 
-// Least-squares fit log err = log C + p log h over the points with err > 0.
-struct OrderFit {
-  double order = std::numeric_limits<double>::quiet_NaN();
-  double log_constant = std::numeric_limits<double>::quiet_NaN();
-  double h_min = 0, h_max = 0;
-  std::size_t points = 0;
-  double max_log_deviation = 0;  // max |log err - fit| over the points: how straight the line is
-};
-OrderFit fit_order(std::span<const double> h, std::span<const double> err);
-
-// n log-spaced values from h_max down to h_min.
-std::vector<double> log_spaced(double h_max, double h_min, int n);
-
 // The step h = t_impact / (m + theta): the grid point t_m lies a fraction theta of a step before
 // the impact at t_impact (for f = 0 the particle is then theta h |v| above the floor at t_m).
 inline double step_with_fraction(double t_impact, std::int64_t m, double theta) {
@@ -207,8 +194,7 @@ struct EnergyIdentity412 {
 EnergyIdentity412 energy_identity_412(const ExactSolution& u, const ExactSolution& w,
                                       const Model& model, double t);
 
-// The summary.toml forms of a series and of a fitted order (the drivers' key numbers).
-toml::array toml_array(const std::vector<double>& values);
+// The summary.toml form of a fitted order.
 toml::table order_fit_table(const OrderFit& fit);
 
 }  // namespace impact

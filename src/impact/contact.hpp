@@ -32,8 +32,8 @@ struct ContactEpisode {
   std::int64_t steps = 0;       // consecutive contact steps, l .. l + steps - 1
   // Fraction of step l flown before the floor along the straight line,
   // (u^l - phi) / (h |v^l|) for v^l < 0, else 0. Without COR, direct rebounds with
-  // |v^l| (1 - 2 theta) and removes N^l (u^l - phi) = 2 theta (1 - theta) (v^l)^2 + |f| theta h |v^l|
-  // by (4-6).
+  // |v^l| (1 - 2 theta) and removes N^l (u^l - phi) = 2 theta (1 - theta) (v^l)^2 + |f| theta h
+  // |v^l| by (4-6).
   double linear_fraction = 0;
   // The same along the free flight under f: s / h with s the first root of
   // (u^l - phi) + v^l s + f s^2 / 2 = 0; NaN when the particle starts below the floor (a scheme

@@ -15,24 +15,27 @@ struct State {
 };
 
 // The physical data every solver needs. An absent body force is f = 0; an absent COR means
-// "no restitution law": each scheme keeps its own impact behaviour (see paper_notes/restitution.md),
-// and the exact reference is elastic (COR = 1), the limit in which Lemma 1 conserves energy.
+// "no restitution law": each scheme keeps its own impact behaviour (see
+// paper_notes/restitution.md), and the exact reference is elastic (COR = 1), the limit in which
+// Lemma 1 conserves energy.
 struct Model {
-  double phi = 0.0;            // floor position (2-2)
-  double f = 0.0;              // constant body force (2-1)
-  std::optional<double> cor;   // COR = -v_after / v_before, in [0, 1]
+  double phi = 0.0;           // floor position (2-2)
+  double f = 0.0;             // constant body force (2-1)
+  std::optional<double> cor;  // COR = -v_after / v_before, in [0, 1]
 };
 
 // Energy (3-1)/(4-5): E = v^2/2 - f u.
-inline double energy(const Model& model, const State& s) { return 0.5 * s.v * s.v - model.f * s.u; }
+inline double energy(const Model& model, const State& s) {
+  return 0.5 * s.v * s.v - model.f * s.u;
+}
 
 // What one step from t_l to t_{l+1} reports besides the new state.
 struct StepInfo {
   // N^l of (4-1): the contact impulse delivered in (t_l, t_{l+1}] divided by h, so that
   // h * sum N^l = v^n - v^0 - f T (the impulse identity (4-9) with a body force).
   double contact_force = 0.0;
-  int iterations = 0;      // Newton iterations (fb_newton) or ODE steps (penalty); 0 otherwise
-  bool converged = true;   // false when an iterative solve hit its cap without meeting its rule
+  int iterations = 0;     // Newton iterations (fb_newton) or ODE steps (penalty); 0 otherwise
+  bool converged = true;  // false when an iterative solve hit its cap without meeting its rule
 };
 
 // The time grid: t_l = l h exactly (never accumulated), l = 0..steps.
@@ -46,9 +49,8 @@ struct Grid {
   // else ceil(T/h). T/h must be at most 2^53 (the scene reader checks it).
   static Grid covering(double T, double h) {
     const double ratio = T / h, rounded = std::round(ratio);
-    return {h, static_cast<std::int64_t>(std::abs(ratio - rounded) <= 1e-9 * rounded
-                                             ? rounded
-                                             : std::ceil(ratio))};
+    return {h, static_cast<std::int64_t>(
+                   std::abs(ratio - rounded) <= 1e-9 * rounded ? rounded : std::ceil(ratio))};
   }
 };
 

@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <array>
 #include <climits>
-#include <iterator>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <new>
 #include <numbers>
@@ -22,8 +22,9 @@ namespace {
 
 // Every odeiv2 stepper, by name. The implicit ones (rk1imp, rk2imp, rk4imp, bsimp, msbdf) use the
 // Jacobian. GSL exports the types as pointer variables.
-constexpr std::string_view kStepperNames[] = {"rk8pd", "rkf45",  "rkck",   "rk4",    "rk2",  "msbdf",
-                                              "msadams", "rk4imp", "rk2imp", "rk1imp", "bsimp"};
+constexpr std::string_view kStepperNames[] = {"rk8pd",  "rkf45",  "rkck",    "rk4",
+                                              "rk2",    "msbdf",  "msadams", "rk4imp",
+                                              "rk2imp", "rk1imp", "bsimp"};
 const gsl_odeiv2_step_type* const* const kStepperTypes[] = {
     &gsl_odeiv2_step_rk8pd,   &gsl_odeiv2_step_rkf45,  &gsl_odeiv2_step_rkck,
     &gsl_odeiv2_step_rk4,     &gsl_odeiv2_step_rk2,    &gsl_odeiv2_step_msbdf,

@@ -36,17 +36,17 @@ struct RunSummary {
 // not empty. Out of line and taking copies, so that the step loop keeps its state in registers
 // (measured: 12 -> 3 ns per direct step).
 [[noreturn, gnu::cold, gnu::noinline]] void throw_step_failure(std::int64_t l, double t, State s,
-                                                              StepInfo info);
+                                                               StepInfo info);
 [[noreturn, gnu::cold, gnu::noinline]] void throw_step_failure(std::int64_t l, double t, State s,
-                                                              StepInfo info,
-                                                              const std::string& detail);
+                                                               StepInfo info,
+                                                               const std::string& detail);
 
 // The same with the stepper's own account of a solve that did not converge, for a stepper that
 // gives one (std::string failure_reason() const: which rule failed, the residual reached).
 template <class Stepper>
 [[noreturn, gnu::cold, gnu::noinline]] void throw_step_failure(const Stepper& stepper,
-                                                              std::int64_t l, double t, State s,
-                                                              StepInfo info) {
+                                                               std::int64_t l, double t, State s,
+                                                               StepInfo info) {
   if constexpr (requires { stepper.failure_reason(); })
     if (!info.converged) throw_step_failure(l, t, s, info, stepper.failure_reason());
   throw_step_failure(l, t, s, info);
@@ -68,8 +68,8 @@ template <class Stepper, class Observer>
       throw_step_failure(stepper, l, grid.t(l), s, info);
     summary.contact_steps += info.contact_force > 0;
     summary.iterations += info.iterations;
-    summary.max_iterations = info.iterations > summary.max_iterations ? info.iterations
-                                                                       : summary.max_iterations;
+    summary.max_iterations =
+        info.iterations > summary.max_iterations ? info.iterations : summary.max_iterations;
     observe(l + 1, s, info);
   }
   summary.steps = grid.steps;

@@ -64,8 +64,9 @@ class MethodKeys {
       for (const auto& r : read_) read = read || r == key.str();
       if (!read) {
         std::vector<std::string_view> names(read_.begin(), read_.end());
-        fail(key.str(), node,
-             "unknown key for method '" + std::string(method_) + "' (allowed: " + join(names) + ")");
+        fail(
+            key.str(), node,
+            "unknown key for method '" + std::string(method_) + "' (allowed: " + join(names) + ")");
       }
     }
   }
@@ -119,9 +120,8 @@ Params read(MethodKeys&, Params p) {
 MethodParams read_method_keys(const toml::table& method, const std::string& source,
                               const MethodInfo& info) {
   MethodKeys keys(method, source, info.name);
-  MethodParams params =
-      std::visit([&](const auto& defaults) { return MethodParams(read(keys, defaults)); },
-                 info.defaults);
+  MethodParams params = std::visit(
+      [&](const auto& defaults) { return MethodParams(read(keys, defaults)); }, info.defaults);
   keys.reject_unread();
   return params;
 }

@@ -206,7 +206,8 @@ void read_channels(const Reader& r, const toml::node& channels, const MethodInfo
         if (channel_name(c) != s->get()) continue;
         if (c == Channel::iterations && !method.has_iterations) break;
         for (Channel seen : output.channels)
-          if (seen == c) r.fail_value("output.channels", item, "is listed twice (at most once each)");
+          if (seen == c)
+            r.fail_value("output.channels", item, "is listed twice (at most once each)");
         output.channels.push_back(c);
         ok = true;
       }

@@ -1,5 +1,5 @@
-// The scene reader: a scene file (TOML) and --set overrides into a validated Scene (impact/scene.hpp).
-// A scene states only what it needs; what it leaves out is absent, not zero.
+// The scene reader: a scene file (TOML) and --set overrides into a validated Scene
+// (impact/scene.hpp). A scene states only what it needs; what it leaves out is absent, not zero.
 #pragma once
 
 #include <string>
