@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "analysis/fit.hpp"
+#include "analysis/test_functions.hpp"
 #include "impact/contact.hpp"
 #include "impact/error_norms.hpp"
 #include "impact/exact.hpp"
@@ -171,15 +172,6 @@ struct WeakSolutionCheck {
   int test_functions = 0;
 };
 WeakSolutionCheck check_weak_solution(const ExactSolution& x, const Model& model, double T);
-
-// The smooth bump psi(t) = exp(-1 / (1 - s^2)), s = (t - center) / radius, supported in
-// |t - center| < radius, and its first two derivatives: the test functions of the weak check.
-struct Bump {
-  double center = 0, radius = 1;
-  double value(double t) const;
-  double first(double t) const;
-  double second(double t) const;
-};
 
 // The terms of (4-12) at time t for two solutions u, w of (2-1) with the same constant f.
 struct EnergyIdentity412 {
