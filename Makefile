@@ -26,6 +26,7 @@ help:
 	@echo "make asan-test    the test suite under AddressSanitizer + UBSan, in $(ASAN_BUILD)/"
 	@echo "make fuzz         fuzz the scene reader and --set for $(FUZZ_SECONDS) s (clang); fuzz-long: 30 min"
 	@echo "make determinism  check that an -O0 build writes the same bytes as $(BUILD)/"
+	@echo "make odr-check    link the library with -flto into one shared object: fails on an ODR violation"
 
 all: tools
 	@$(MAKE) --no-print-directory experiments
@@ -66,6 +67,16 @@ clean:
 # Hardening (tests/README.md): the test suite under AddressSanitizer and UBSan, the libFuzzer
 # target of the scene reader and --set (tests/fuzz; clang is installed for it only), and
 # byte-identical output from an -O0 build (a second build, so a script rather than a ctest).
+ODR_BUILD ?= build-odr
+.PHONY: odr-check
+# Every object of src/ without a main(), compiled with -flto and linked into one shared object with
+# -Werror=odr -Werror=lto-type-mismatch: a type or function defined twice, differently, fails here.
+odr-check: deps
+	@cmake -S . -B $(ODR_BUILD) $(CMAKE_FLAGS) -DIMPACT_ODR_CHECK=ON -DIMPACT_BUILD_TESTS=OFF \
+	  > $(ODR_BUILD).configure.log 2>&1 || { cat $(ODR_BUILD).configure.log; exit 1; }
+	@cmake --build $(ODR_BUILD) --target impact_odr_check -j $(JOBS)
+	@echo "odr-check: the library links as one LTO shared object without ODR violations"
+
 ASAN_BUILD ?= build-asan
 FUZZ_BUILD ?= build-fuzz
 O0_BUILD ?= build-O0
