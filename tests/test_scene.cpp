@@ -142,7 +142,9 @@ TEST_CASE("scene: integers are accepted where numbers are expected", "[scene]") 
   CHECK(s.grid.h == 1.0);
   CHECK(s.grid.steps == 10);
   // Integer method keys, too (fb_newton's epsilon is a number).
-  CHECK(impact::method_name(parse(with_method("[method]\nname = \"fb_newton\"\nepsilon = 1\n")).method) == "fb_newton");
+  CHECK(impact::method_name(
+            parse(with_method("[method]\nname = \"fb_newton\"\nepsilon = 1\n")).method) ==
+        "fb_newton");
 }
 
 TEST_CASE("scene: steps is T/h rounded when within 1e-9 relative, else ceil(T/h)", "[scene]") {
@@ -289,6 +291,22 @@ TEST_CASE("scene: missing required tables and keys", "[scene]") {
   CHECK_SCENE_ERROR(parse(""), Contains("scene.toml") && Contains("[initial]"));
 }
 
+TEST_CASE("scene: direct and fb_newton read free_flight = closed_form | paper", "[scene]") {
+  using impact::FreeFlightForm;
+  CHECK(std::get<impact::DirectParams>(parse(kBase).method).free_flight ==
+        FreeFlightForm::closed_form);
+  CHECK(std::get<impact::DirectParams>(parse(kBase, {"method.free_flight=paper"}).method)
+            .free_flight == FreeFlightForm::paper);
+  CHECK(std::get<impact::FbNewtonParams>(
+            parse(kBase, {"method.name=fb_newton", "method.free_flight=paper"}).method)
+            .free_flight == FreeFlightForm::paper);
+  CHECK_SCENE_ERROR(
+      parse(kBase, {"method.free_flight=stepped"}),
+      Contains("method.free_flight = 'stepped'") && Contains("must be one of closed_form, paper"));
+  CHECK_SCENE_ERROR(parse(kBase, {"method.name=exact", "method.free_flight=paper"}),
+                    Contains("unknown key for method 'exact'"));
+}
+
 TEST_CASE("scene: the method and its keys are checked", "[scene]") {
   CHECK_SCENE_ERROR(parse(with_method("[method]\nname = \"newton\"\n")),
                     Contains("scene.toml") && Contains("method.name = 'newton'") &&
@@ -297,11 +315,13 @@ TEST_CASE("scene: the method and its keys are checked", "[scene]") {
   // A key the method does not use (theta is moreau_jean's).
   CHECK_SCENE_ERROR(parse(with_method("[method]\nname = \"direct\"\ntheta = 0.5\n")),
                     Contains("scene.toml") && Contains("method.theta = 0.5") &&
-                        Contains("unknown key for method 'direct'") && Contains("allowed: name)"));
+                        Contains("unknown key for method 'direct'") &&
+                        Contains("allowed: name, free_flight)"));
   CHECK_SCENE_ERROR(
       parse(with_method("[method]\nname = \"fb_newton\"\nepsilom = 1e-12\n")),
       Contains("method.epsilom") && Contains("allowed: name, epsilon, tolerance, max_iterations"));
-  CHECK(impact::method_name(parse(with_method("[method]\nname = \"moreau_jean\"\ntheta = 0.5\n")).method) ==
+  CHECK(impact::method_name(
+            parse(with_method("[method]\nname = \"moreau_jean\"\ntheta = 0.5\n")).method) ==
         "moreau_jean");
 
   // fb_newton ranges.
@@ -318,7 +338,9 @@ TEST_CASE("scene: the method and its keys are checked", "[scene]") {
                     Contains("method.theta = 1.5") && Contains("must be in [0, 1]"));
 
   // penalty ranges and stepper names.
-  CHECK(impact::method_name(parse(with_method("[method]\nname = \"penalty\"\nstiffness = 1e7\n")).method) == "penalty");
+  CHECK(impact::method_name(
+            parse(with_method("[method]\nname = \"penalty\"\nstiffness = 1e7\n")).method) ==
+        "penalty");
   CHECK_SCENE_ERROR(
       parse(with_method("[method]\nname = \"penalty\"\nstiffness = 0.0\n")),
       Contains("scene.toml") && Contains("method.stiffness = 0:") && Contains("must be in (0, "));

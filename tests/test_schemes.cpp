@@ -257,3 +257,30 @@ TEST_CASE(
     CHECK(s.u * info.contact_force == Approx(eps / 2).epsilon(1e-6));
   }
 }
+
+TEST_CASE(
+    "direct with free_flight = paper is (5-1) and (4-2) as printed: the closed form's "
+    "discrete solution up to rounding",
+    "[direct][property]") {
+  // Before the first impact both evaluate u0 + v0 t + f t^2/2 and v0 + f t at t = l h: the closed
+  // form once, (5-1) by accumulating increments. A rounding r of u^{l+1} (|r| <= ulp, |u| <= 10)
+  // enters v^{l+1} from (4-2) as 2 r / h and stays there (dv_{l+1} = dv_l + 2 r_l / h), and u
+  // integrates it: |dv_l| <= 2 l ulp / h and |du_l| <= l^2 ulp + l ulp.
+  Model model;
+  model.f = -9.80665;
+  const State initial{5.0, -1.0};
+  const double h = 1e-3;
+  const Grid grid{h, 900};  // the first impact is at t1 = 0.9120...
+  DirectParams paper;
+  paper.free_flight = impact::FreeFlightForm::paper;
+  auto closed = trajectory(Direct(model, h, {}), initial, grid);
+  auto printed = trajectory(Direct(model, h, paper), initial, grid);
+  for (std::size_t l = 0; l < closed.size(); ++l) {
+    INFO("l = " << l);
+    const double n = static_cast<double>(l) + 1;
+    const double ulp = 10 * kEps;
+    CHECK(printed[l].s.u == Approx(closed[l].s.u).epsilon(0).margin((n * n + n) * ulp));
+    CHECK(printed[l].s.v == Approx(closed[l].s.v).epsilon(0).margin(4 * n * ulp / h));
+    CHECK(printed[l].info.contact_force == 0.0);
+  }
+}

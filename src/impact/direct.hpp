@@ -49,12 +49,19 @@ void direct_step(DirectLanes<Real>& s, const Real& phi, const Real& f, const Rea
   s.since = free ? since : Real{};
 }
 
-struct DirectParams {};
+struct DirectParams {
+  FreeFlightForm free_flight = FreeFlightForm::closed_form;
+};
 
 class Direct {
  public:
-  Direct(const Model& model, double h, const DirectParams&)
-      : phi_(model.phi), f_(model.f), cor_(model.cor.value_or(0.0)), has_cor_(model.cor), h_(h) {}
+  Direct(const Model& model, double h, const DirectParams& params)
+      : phi_(model.phi),
+        f_(model.f),
+        cor_(model.cor.value_or(0.0)),
+        has_cor_(model.cor),
+        h_(h),
+        paper_(params.free_flight == FreeFlightForm::paper) {}
 
   // A free flight starts at s: the anchor of the closed form (free_flight.hpp).
   void initialize(const State& s, std::int64_t) {
@@ -64,6 +71,7 @@ class Direct {
   }
 
   StepInfo do_step(State& s, std::int64_t) {
+    if (paper_) return paper_step(s);
     direct_step(lanes_, phi_, f_, cor_, has_cor_, h_);
     s = {lanes_.u, lanes_.v};
     StepInfo info;
@@ -72,9 +80,28 @@ class Direct {
   }
 
  private:
+  // (5-1) and (4-2) as printed, from the caller's state (free_flight.hpp): with N^l = 0 when
+  // u^{l+1} > phi, else u^{l+1} = phi and N^l = (2/h)((phi - u^l)/h - v^l) - f; the COR law as in
+  // direct_step.
+  StepInfo paper_step(State& s) const {
+    const State free = paper_free_step(s, f_, h_);
+    StepInfo info;
+    if (free.u > phi_) {
+      s = free;
+      return info;
+    }
+    info.contact_force = 2 / h_ * ((phi_ - s.u) / h_ - s.v) - f_;
+    const double v_scheme = 2 / h_ * (phi_ - s.u) - s.v;
+    double v_next;
+    velocity_after_step(has_cor_, cor_, info.contact_force > 0, s.v, v_scheme, v_next);
+    s = {phi_, v_next};
+    return info;
+  }
+
   double phi_, f_, cor_;
   bool has_cor_;
   double h_;
+  bool paper_;
   DirectLanes<double> lanes_;
 };
 

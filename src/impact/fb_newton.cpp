@@ -75,7 +75,9 @@ StepInfo FbNewton::do_step(State& s, std::int64_t l) {
   constexpr double kSmoothingCheck = 0.1;
   const double phi = model_.phi, h = h_, eps = params_.epsilon;
   const double k = 2 / (h * h);
-  const State free = flight_.predict(l);  // x_free = g^l + h v^l + h^2 f/2, see FreeFlight
+  const bool paper = params_.free_flight == FreeFlightForm::paper;
+  // x_free = g^l + h v^l + h^2 f/2 (free_flight.hpp)
+  const State free = paper ? paper_free_step(gap_, model_.f, h) : flight_.predict(l);
   const double x_free = free.u;
   double x = std::fmax(x_free, 0.0);
   StepInfo info;
@@ -136,7 +138,8 @@ StepInfo FbNewton::do_step(State& s, std::int64_t l) {
   if (b == 0) {
     gap_ = free;  // N^l = 0: the free flight goes on
   } else {
-    const double v_scheme = free.v + h * b;  // (4-1), equal to (4-2) at the solution
+    // (4-1), equal to (4-2) at the solution; `paper` evaluates (4-2) as printed.
+    const double v_scheme = paper ? 2 / h * (x - gap_.u) - gap_.v : free.v + h * b;
     // The COR law acts where the unsmoothed (4-3) has N^l > 0, i.e. where the free flight ends
     // below the floor: the same steps as in direct, not those the smoothing alone pushes.
     const double v_before = gap_.v;

@@ -16,6 +16,7 @@ struct FbNewtonParams {
   double epsilon = 1e-15;    // smoothing parameter (paper: 1e-15)
   double tolerance = 1e-15;  // relative residual, see FbNewton::do_step (paper: 1e-15)
   int max_iterations = 50;
+  FreeFlightForm free_flight = FreeFlightForm::closed_form;
 };
 
 class FbNewton {

@@ -16,6 +16,19 @@
 
 namespace impact {
 
+// How a scheme evaluates its free flight: `closed_form` from the last contact (above), or `paper`,
+// (5-1) evaluated term by term as printed at every step, u^{l+1} = h (h (N^l + f)/2 + v^l) + u^l,
+// with v^{l+1} = (2/h)(u^{l+1} - u^l) - v^l from (4-2). Both are the same discrete solution in
+// exact arithmetic; in floating point they differ by rounding, which decides, e.g., when
+// Figure 4's particle comes to rest (paper_notes/figure4.md).
+enum class FreeFlightForm { closed_form, paper };
+
+// One step of (5-1) with N^l = 0 and (4-2) as printed, from (u, v); `u` may be a gap u - phi.
+inline State paper_free_step(const State& s, double f, double h) {
+  const double u = h * (h * f / 2 + s.v) + s.u;
+  return {u, 2 / h * (u - s.u) - s.v};
+}
+
 // The free flight at time t after the anchor (u_a, v_a) under the force f (Real: double or a vector
 // of lanes; Scalar: double or Real).
 template <class Real, class Scalar>

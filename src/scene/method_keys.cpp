@@ -88,10 +88,24 @@ class MethodKeys {
   std::vector<std::string> read_{"name"};
 };
 
+// free_flight = "closed_form" | "paper" (free_flight.hpp).
+FreeFlightForm read_free_flight(MethodKeys& keys, FreeFlightForm fallback) {
+  return keys.choice("free_flight", fallback == FreeFlightForm::paper ? "paper" : "closed_form",
+                     {"closed_form", "paper"}) == "paper"
+             ? FreeFlightForm::paper
+             : FreeFlightForm::closed_form;
+}
+
+DirectParams read(MethodKeys& keys, DirectParams p) {
+  p.free_flight = read_free_flight(keys, p.free_flight);
+  return p;
+}
+
 FbNewtonParams read(MethodKeys& keys, FbNewtonParams p) {
   p.epsilon = keys.number("epsilon", p.epsilon, 0.0, 1.0, true);
   p.tolerance = keys.number("tolerance", p.tolerance, 0.0, 1e-1, true);
   p.max_iterations = static_cast<int>(keys.integer("max_iterations", p.max_iterations, 1, 10000));
+  p.free_flight = read_free_flight(keys, p.free_flight);
   return p;
 }
 
