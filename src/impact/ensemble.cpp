@@ -46,9 +46,9 @@ template <class T>
 
 // The columns of the ensemble, each at its first particle.
 struct Columns {
-  const double *phi, *f, *cor;
+  const double *f, *cor;
   const std::int64_t* has_cor;
-  double *u, *v, *force, *anchor_u, *anchor_v, *since;
+  double *gap, *v, *force, *anchor_gap, *anchor_v, *since;
 };
 
 // A block of Vectors vectors of Lanes particles is loaded into registers, stepped `steps` times and
@@ -61,29 +61,28 @@ template <int Lanes, int Vectors>
   using Mask = typename LaneTypes<Lanes>::Mask;
   for (Eigen::Index first = 0; first < padded; first += Lanes * Vectors) {
     DirectLanes<Real> s[Vectors];
-    Real phi[Vectors], f[Vectors], cor[Vectors];
+    Real f[Vectors], cor[Vectors];
     Mask has_cor[Vectors];
     for (int b = 0; b < Vectors; ++b) {
       const Eigen::Index i = first + b * Lanes;
-      load(phi[b], c.phi + i);
       load(f[b], c.f + i);
       load(cor[b], c.cor + i);
       load(has_cor[b], c.has_cor + i);
-      load(s[b].u, c.u + i);
+      load(s[b].gap, c.gap + i);
       load(s[b].v, c.v + i);
       load(s[b].contact_force, c.force + i);
-      load(s[b].anchor_u, c.anchor_u + i);
+      load(s[b].anchor_gap, c.anchor_gap + i);
       load(s[b].anchor_v, c.anchor_v + i);
       load(s[b].since, c.since + i);
     }
     for (std::int64_t l = 0; l < steps; ++l)
-      for (int b = 0; b < Vectors; ++b) direct_step(s[b], phi[b], f[b], cor[b], has_cor[b], h);
+      for (int b = 0; b < Vectors; ++b) direct_step(s[b], f[b], cor[b], has_cor[b], h);
     for (int b = 0; b < Vectors; ++b) {
       const Eigen::Index i = first + b * Lanes;
-      store(c.u + i, s[b].u);
+      store(c.gap + i, s[b].gap);
       store(c.v + i, s[b].v);
       store(c.force + i, s[b].contact_force);
-      store(c.anchor_u + i, s[b].anchor_u);
+      store(c.anchor_gap + i, s[b].anchor_gap);
       store(c.anchor_v + i, s[b].anchor_v);
       store(c.since + i, s[b].since);
     }
@@ -95,22 +94,21 @@ template <int Lanes, int Vectors>
                                                       std::int64_t steps, double theta, double h) {
   using Real = typename LaneTypes<Lanes>::Real;
   for (Eigen::Index first = 0; first < padded; first += Lanes * Vectors) {
-    Real u[Vectors], v[Vectors], force[Vectors], phi[Vectors], f[Vectors], e[Vectors];
+    Real gap[Vectors], v[Vectors], force[Vectors], f[Vectors], e[Vectors];
     for (int b = 0; b < Vectors; ++b) {
       const Eigen::Index i = first + b * Lanes;
-      load(phi[b], c.phi + i);
       load(f[b], c.f + i);
       load(e[b], c.cor + i);
-      load(u[b], c.u + i);
+      load(gap[b], c.gap + i);
       load(v[b], c.v + i);
       load(force[b], c.force + i);
     }
     for (std::int64_t l = 0; l < steps; ++l)
       for (int b = 0; b < Vectors; ++b)
-        moreau_jean_step(u[b], v[b], force[b], phi[b], f[b], e[b], theta, h);
+        moreau_jean_step(gap[b], v[b], force[b], f[b], e[b], theta, h);
     for (int b = 0; b < Vectors; ++b) {
       const Eigen::Index i = first + b * Lanes;
-      store(c.u + i, u[b]);
+      store(c.gap + i, gap[b]);
       store(c.v + i, v[b]);
       store(c.force + i, force[b]);
     }
@@ -189,7 +187,7 @@ Ensemble::Ensemble(EnsembleMethod method, std::span<const Model> models,
   f_.setZero(padded_);
   cor_.setZero(padded_);
   has_cor_.setZero(padded_);
-  u_.setZero(padded_);
+  gap_.setZero(padded_);
   v_.setZero(padded_);
   force_.setZero(padded_);
   since_.setZero(padded_);
@@ -203,12 +201,13 @@ Ensemble::Ensemble(EnsembleMethod method, std::span<const Model> models,
     // As Direct and MoreauJean read their Model.
     cor_[i] = method == EnsembleMethod::direct ? m.cor.value_or(0.0) : m.cor.value_or(1.0);
     has_cor_[i] = m.cor ? -1 : 0;
-    u_[i] = initial[static_cast<std::size_t>(i)].u;
+    gap_[i] = initial[static_cast<std::size_t>(i)].u - m.phi;
     v_[i] = initial[static_cast<std::size_t>(i)].v;
   }
   // Direct starts its free flight at the initial state (DirectLanes).
-  anchor_u_ = u_;
+  anchor_gap_ = gap_;
   anchor_v_ = v_;
+  u_ = phi_ + gap_;
 }
 
 std::string_view Ensemble::instruction_set() const {
@@ -234,8 +233,8 @@ void Ensemble::use(std::string_view instruction_set) {
 
 void Ensemble::advance(std::int64_t steps) {
   if (steps <= 0) return;
-  const Columns c{phi_.data(), f_.data(),     cor_.data(),      has_cor_.data(),  u_.data(),
-                  v_.data(),   force_.data(), anchor_u_.data(), anchor_v_.data(), since_.data()};
+  const Columns c{f_.data(),     cor_.data(),        has_cor_.data(),  gap_.data(),  v_.data(),
+                  force_.data(), anchor_gap_.data(), anchor_v_.data(), since_.data()};
   const bool direct = method_ == EnsembleMethod::direct;
   switch (level_) {
 #if defined(__x86_64__) && defined(__GNUC__)
@@ -251,6 +250,7 @@ void Ensemble::advance(std::int64_t steps) {
       direct ? baseline_direct(c, padded_, steps, h_)
              : baseline_moreau_jean(c, padded_, steps, theta_, h_);
   }
+  u_ = phi_ + gap_;  // as the single-particle solvers return u = phi + gap
   steps_done_ += steps;
 }
 
