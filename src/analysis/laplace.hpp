@@ -26,8 +26,8 @@ struct LaplaceValue {
 };
 
 // w smooth between the breakpoints (its jumps and kinks, in any order; those outside (0, inf)
-// are ignored): gsl_integration_qag on each piece between consecutive breakpoints, and
-// gsl_integration_qagiu from the last one to infinity. w is not evaluated where e^{-st}
+// are ignored): QAG (GK21) on each piece between consecutive breakpoints, and QAGIU from the last
+// one to infinity (analysis/quadrature.hpp). w is not evaluated where e^{-st}
 // underflows to 0, so it may be undefined (or overflow) for huge t. Needs s > 0.
 LaplaceValue laplace_transform(const std::function<double(double)>& w,
                                std::vector<double> breakpoints, double s);
@@ -38,8 +38,8 @@ enum class Interpolation {
   linear,              // the straight line through (t_l, w_l) and (t_{l+1}, w_{l+1})
 };
 
-// Transform of the interpolant of w_0..w_n (grid t_l = l h) on [0, t_stop], with
-// gsl_integration_qag on each step, where t_stop = n h, or the first grid time with s t >= 60
+// Transform of the interpolant of w_0..w_n (grid t_l = l h) on [0, t_stop], with QAG (GK15) on
+// each step, where t_stop = n h, or the first grid time with s t >= 60
 // (e^{-60} < 1e-26) if that comes first. tail_bound = sup |w| e^{-s t_stop} / s, where sup is the
 // larger of `tail_sup` (a bound on |w(t)| for t > n h that the caller knows, e.g. E^0 from the
 // energy inequality of Lemma 3) and the samples after t_stop. Needs s > 0, h > 0 and at least two
