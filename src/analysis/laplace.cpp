@@ -8,9 +8,7 @@
 
 #include "analysis/quadrature.hpp"
 #include "impact/output.hpp"
-#include "impact/registry.hpp"
 #include "impact/run.hpp"
-#include "scene/read_scene.hpp"
 
 namespace impact {
 
@@ -191,9 +189,7 @@ Lemma1Point lemma1_samples(std::span<const double> energies, double h, Interpola
           s * L.abserr / scale, s * L.tail_bound / scale};
 }
 
-std::vector<double> energy_samples(const std::string& scene_path,
-                                   const std::vector<std::string>& overrides) {
-  const Scene scene = load_scene(scene_path, overrides);
+std::vector<double> energy_samples(const Scene& scene) {
   AnyStepper stepper = make_stepper(scene);
   std::vector<double> energies;
   energies.reserve(static_cast<std::size_t>(scene.grid.steps) + 1);
@@ -201,40 +197,6 @@ std::vector<double> energy_samples(const std::string& scene_path,
     energies.push_back(energy(scene.model, s));
   });
   return energies;
-}
-
-std::vector<Lemma1Case> lemma1_cases() {
-  const std::string T = "time.T=" + std::to_string(kLemma1SchemeT);
-  return {
-      {"exact_f0_elastic", "figure3/no_cor.toml", {}, true},
-      {"exact_f0_cor075", "figure3/cor075.toml", {}, true},
-      {"exact_gravity_elastic", "figure4/no_cor.toml", {}, true},
-      {"exact_gravity_cor075", "figure4/cor075.toml", {}, true},
-      {"exact_gravity_plastic", "figure4/no_cor.toml", {"floor.cor=0.0"}, true},
-      {"direct_f0_no_cor", "figure3/no_cor.toml", {T}, false},
-      {"direct_f0_no_cor_h0012", "figure3/no_cor.toml", {T, "time.h=0.0012"}, false},
-      {"direct_f0_cor075", "figure3/cor075.toml", {T}, false},
-      {"direct_gravity_no_cor", "figure4/no_cor.toml", {T}, false},
-      {"direct_gravity_cor075", "figure4/cor075.toml", {T}, false},
-  };
-}
-
-std::vector<Lemma1Point> lemma1_run(const Lemma1Case& c, const std::string& source_dir,
-                                    Interpolation interpolation) {
-  const std::string path = source_dir + "/experiments/" + c.scene;
-  const Scene scene = load_scene(path, c.overrides);
-  std::vector<Lemma1Point> points;
-  if (c.exact) {
-    for (double s : kLemma1S) points.push_back(lemma1_exact(scene.model, scene.initial, s));
-    return points;
-  }
-  if (scene.model.f > 0)
-    throw std::invalid_argument("lemma1_run: no bound on E beyond T for f > 0 (" + path + ")");
-  const std::vector<double> E = energy_samples(path, c.overrides);
-  const double tail_sup = std::fmax(std::fabs(E[0]), std::fabs(scene.model.f * scene.model.phi));
-  for (double s : kLemma1S)
-    points.push_back(lemma1_samples(E, scene.grid.h, interpolation, s, tail_sup));
-  return points;
 }
 
 }  // namespace impact
