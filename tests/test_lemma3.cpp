@@ -104,7 +104,7 @@ TEST_CASE("the energy inequality E^{l+1} <= E^l (4-6) holds at every step up to 
   CHECK(s.energy_steps == 799920);
   CHECK(s.energy_violations == 0);
   // Round-off does raise E at many steps (E is recomputed from rounded u and v), by at most 8%
-  // of the tolerance of bounds.hpp.
+  // of the tolerance of measure_lemma3 (analysis/tolerances.hpp).
   CHECK(s.energy_increases > 0);
   CHECK(s.energy_max_increase_over_tolerance < 1);
 }
