@@ -90,10 +90,6 @@ SplinePiece SplineImpact::right_of_knot(int k) {
   return right[k];
 }
 
-double SplineImpact::lemma5_force_at_offset(double r) const {
-  return std::fabs(r) < eps_ ? at_offset(2, r) / 6 : 0.0;
-}
-
 double KnotJumps::max_abs(int max_order) const {
   check_order(max_order, 3);
   double m = 0;

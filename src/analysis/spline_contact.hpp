@@ -62,8 +62,6 @@ class SplineImpact {
   double knot(int k) const;
   static SplinePiece left_of_knot(int k);
   static SplinePiece right_of_knot(int k);
-  // Lemma 5's contact force N_eps = S''/6 on (t* - eps, t* + eps), 0 elsewhere.
-  double lemma5_force_at_offset(double r) const;
 
  private:
   double t_star_, eps_;
