@@ -2,16 +2,15 @@
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_fit.h>
-#include <gsl/gsl_integration.h>
 
 #include <algorithm>
 #include <cmath>
 #include <iterator>
-#include <memory>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
+#include "analysis/quadrature.hpp"
 #include "impact/gsl_errors.hpp"
 
 namespace impact {
@@ -181,40 +180,21 @@ double max_difference(const SplineImpact& formula, const NaturalCubicSpline& spl
 
 Pairing pair_with_second_derivative(const SplineImpact& spline, double weight,
                                     const std::function<double(double)>& psi) {
-  struct Integrand {
-    const SplineImpact* spline;
-    SplinePiece piece;
-    double weight;
-    const std::function<double(double)>* psi;
-    static double eval(double r, void* p) {
-      const auto* self = static_cast<const Integrand*>(p);
-      return self->weight * self->spline->piece(self->piece, 2, r) *
-             (*self->psi)(self->spline->t_star() + r);
-    }
-  };
   // Each piece's integrand is a linear function times a smooth psi over an interval of length
   // eps: the 61-point Gauss-Kronrod rule integrates it to round-off without subdividing.
-  constexpr std::size_t kLimit = 64;
-  constexpr double kRelTol = 1e-12;
-  struct WorkspaceFree {
-    void operator()(gsl_integration_workspace* w) const { gsl_integration_workspace_free(w); }
-  };
-  const GslErrorsAsStatus errors;
-  const std::unique_ptr<gsl_integration_workspace, WorkspaceFree> work(
-      gsl_integration_workspace_alloc(kLimit));
-  if (!work) throw std::runtime_error("gsl_integration_workspace_alloc failed");
+  const Quadrature::Rule rule{0.0, 1e-12, GSL_INTEG_GAUSS61};
+  Quadrature quadrature(64);
   Pairing result;
   const double eps = spline.eps();
   const std::pair<SplinePiece, std::pair<double, double>> pieces[] = {
       {SplinePiece::kS1, {-eps, 0.0}}, {SplinePiece::kS2, {0.0, eps}}};
   for (const auto& [piece, range] : pieces) {
-    Integrand integrand{&spline, piece, weight, &psi};
-    gsl_function f{&Integrand::eval, &integrand};
-    double value = 0, abserr = 0;
-    check_gsl(gsl_integration_qag(&f, range.first, range.second, 0.0, kRelTol, kLimit,
-                                  GSL_INTEG_GAUSS61, work.get(), &value, &abserr),
-              "gsl_integration_qag");
-    (piece == SplinePiece::kS1 ? result.left : result.right) = value;
+    auto integrand = [&, piece = piece](double r) {
+      return weight * spline.piece(piece, 2, r) * psi(spline.t_star() + r);
+    };
+    double abserr = 0;
+    (piece == SplinePiece::kS1 ? result.left : result.right) = quadrature.integrate(
+        integrand, range.first, range.second, {}, rule, "Lemma 5 pairing <w S'', psi>", &abserr);
     result.abserr += abserr;
   }
   return result;

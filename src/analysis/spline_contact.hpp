@@ -109,8 +109,9 @@ NaturalCubicSpline natural_spline_whole(const SplineImpact& spline, double t_beg
 double max_difference(const SplineImpact& formula, const NaturalCubicSpline& spline, int order,
                       double r_begin, double r_end, int samples);
 
-// <weight S'', psi> = integral over (t* - eps, t* + eps) of weight S''(t) psi(t) dt, computed with
-// gsl_integration_qag in the local time r on each cubic piece separately (S'' is smooth on each).
+// <weight S'', psi> = integral over (t* - eps, t* + eps) of weight S''(t) psi(t) dt, computed by
+// Quadrature (GSL's QAG) in the local time r on each cubic piece separately (S'' is smooth on
+// each).
 struct Pairing {
   double left = 0;    // over (t* - eps, t*], the S_1 piece
   double right = 0;   // over [t*, t* + eps), the S_2 piece
