@@ -1,7 +1,6 @@
 #include "analysis/spline_contact.hpp"
 
 #include <gsl/gsl_errno.h>
-#include <gsl/gsl_fit.h>
 
 #include <algorithm>
 #include <cmath>
@@ -10,6 +9,7 @@
 #include <string>
 #include <utility>
 
+#include "analysis/fit.hpp"
 #include "analysis/quadrature.hpp"
 #include "impact/gsl_errors.hpp"
 
@@ -250,26 +250,10 @@ Lemma5Convergence lemma5_convergence(const TestFunction& psi, double t_star,
     const double p = c.psi_at_t_star;
     c.points.push_back({e, lemma5.total() / p, delta.total() / p, lemma5.left / p, lemma5.right / p,
                         c.predicted_coefficient * e * e});
-    deviations.push_back(c.points.back().ratio - 0.5);
+    deviations.push_back(std::fabs(c.points.back().ratio - 0.5));
   }
-  c.fitted_slope = fitted_log_slope(eps, deviations);
+  c.fitted_slope = fit_order(eps, deviations).order;
   return c;
-}
-
-double fitted_log_slope(const std::vector<double>& x, const std::vector<double>& y) {
-  if (x.size() != y.size() || x.size() < 2)
-    throw std::invalid_argument("fitted_log_slope needs two or more (x, y) pairs");
-  std::vector<double> lx, ly;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    lx.push_back(std::log(x[i]));
-    ly.push_back(std::log(std::fabs(y[i])));
-  }
-  double c0 = 0, c1 = 0, cov00 = 0, cov01 = 0, cov11 = 0, sumsq = 0;
-  const GslErrorsAsStatus errors;
-  check_gsl(gsl_fit_linear(lx.data(), 1, ly.data(), 1, lx.size(), &c0, &c1, &cov00, &cov01, &cov11,
-                           &sumsq),
-            "gsl_fit_linear");
-  return c1;
 }
 
 }  // namespace impact

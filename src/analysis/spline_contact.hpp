@@ -150,12 +150,9 @@ struct Lemma5Convergence {
   double psi_at_t_star = 0;
   double predicted_coefficient = 0;  // psi''(t*) / (24 psi(t*))
   std::vector<Lemma5Point> points;   // one per eps, in the order given
-  double fitted_slope = 0;           // of |ratio - 1/2| against eps, log-log, over all points
+  double fitted_slope = 0;           // fit_order of |ratio - 1/2| against eps, all points
 };
 Lemma5Convergence lemma5_convergence(const TestFunction& psi, double t_star,
                                      const std::vector<double>& eps);
-
-// Least-squares slope of log|y| against log x (gsl_fit_linear); the observed order of convergence.
-double fitted_log_slope(const std::vector<double>& x, const std::vector<double>& y);
 
 }  // namespace impact
