@@ -11,6 +11,7 @@
 
 #include "analysis/fit.hpp"
 #include "analysis/quadrature.hpp"
+#include "analysis/test_functions.hpp"
 #include "impact/gsl_errors.hpp"
 
 namespace impact {
@@ -205,10 +206,7 @@ std::vector<TestFunction> lemma5_test_functions(double t_star) {
   const double b = t_star + 0.2;           // bump centre
   const double p = t_star - 1;             // the cubic's expansion point
   auto gaussian = [c, w](double t) { return std::exp(-(t - c) * (t - c) / (2 * w * w)); };
-  auto bump = [b](double t) {
-    const double x = t - b;
-    return std::fabs(x) < 1 ? std::exp(-1 / (1 - x * x)) : 0.0;
-  };
+  const Bump bump{b, 1.0};
   return {
       {"gaussian", gaussian,
        [=](double t) { return ((t - c) * (t - c) / (w * w * w * w) - 1 / (w * w)) * gaussian(t); }},
@@ -216,14 +214,8 @@ std::vector<TestFunction> lemma5_test_functions(double t_star) {
       {"cubic", [p](double t) { return 1 + (t - p) * (t - p) + (t - p) * (t - p) * (t - p); },
        [p](double t) { return 2 + 6 * (t - p); }},
       {"exp", [](double t) { return std::exp(-t); }, [](double t) { return std::exp(-t); }},
-      {"bump", bump,
-       [=](double t) {
-         // b = exp(g), g = -1/(1 - x^2): b'' = (g'' + g'^2) b.
-         const double x = t - b, q = 1 - x * x;
-         if (!(q > 0)) return 0.0;
-         const double g1 = -2 * x / (q * q), g2 = -2 / (q * q) - 8 * x * x / (q * q * q);
-         return (g2 + g1 * g1) * bump(t);
-       }},
+      {"bump", [bump](double t) { return bump.value(t); },
+       [bump](double t) { return bump.second(t); }},
   };
 }
 

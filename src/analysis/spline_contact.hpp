@@ -129,7 +129,8 @@ struct TestFunction {
   std::function<double(double)> second_derivative;
 };
 // A Gaussian centred at t* + 0.3 (width 0.5), cos t, the cubic 1 + (t - t* + 1)^2 + (t - t* + 1)^3,
-// exp(-t) and the C^infinity bump exp(-1/(1 - x^2)), x = t - t* - 0.2, supported in |x| < 1.
+// exp(-t) and the C^infinity bump exp(-1/(1 - x^2)), x = t - t* - 0.2, supported in |x| < 1
+// (Bump{t* + 0.2, 1}, analysis/test_functions.hpp).
 std::vector<TestFunction> lemma5_test_functions(double t_star);
 
 // The Lemma 5 experiment's eps: 1e-1, 10^-1.5, 1e-2, ..., 1e-6 (11 values, half decades; the
