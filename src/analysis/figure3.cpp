@@ -154,6 +154,7 @@ toml::table run_figure3(const ExperimentContext& context) {
   return summary;
 }
 
-const Experiment kFigure3Experiment{"figure3", "Figure 3 (Section 5.2)", &run_figure3};
+const Experiment kFigure3Experiment{
+    "figure3", "Figure 3 (Section 5.2): f = 0, without and with COR = 0.75", &run_figure3};
 
 }  // namespace impact
