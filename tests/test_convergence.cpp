@@ -250,8 +250,9 @@ TEST_CASE(
     INFO("h = " << p.h);
     const double theta = first_theta(p);
     // The complementarity solve gives N^l = (2/h^2)(phi - u_free) = 2 (1 - theta) |v0| / h; the
-    // velocity is then reset to COR |v0| and no further contact force acts (theta = 1: the step
-    // ends on the floor with N^l = 0).
+    // velocity is then reset to COR |v0| and no further contact force acts (an impact on a grid
+    // point: the step that lands on the floor has N^l = 0 and is not a contact step, contact.hpp;
+    // the next one starts on the floor, theta = 0, and carries the whole 2 |v0|).
     CHECK(p.tallies.impulse == Approx(2 * (1 - theta)).margin(rounding_tolerance(p.h)));
     CHECK(p.impulse_residual_corrected() ==
           Approx(2 * (1 - theta) - 1.75).margin(rounding_tolerance(p.h)));
