@@ -11,7 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "analysis/convergence.hpp"
+#include "analysis/fit.hpp"
+#include "analysis/proof_tallies.hpp"
+#include "impact/registry.hpp"
 #include "reference_support.hpp"
 
 using namespace impact;
@@ -78,7 +80,8 @@ Recomputed recompute(const std::string& name) {
   for (std::size_t i = 0; i < hs.size(); ++i)
     if (hs[i] >= kCheapH) {
       r.index.push_back(i);
-      r.points.push_back(measure_convergence(s.method, s.model, s.initial, kT, hs[i]));
+      r.points.push_back(measure_convergence(
+          make_scene(s.model, s.initial, kT, hs[i], find_method(s.method)->defaults)));
     }
   return r;
 }
@@ -193,7 +196,8 @@ TEST_CASE(
     std::vector<double> hs, sups;
     for (std::int64_t m : {250, 2500, 25000}) {
       const double h = step_with_fraction(kOffGridU0, m, theta);
-      const ConvergencePoint p = measure_convergence("direct", scheme, initial, kT, h, limit);
+      const ConvergencePoint p = measure_convergence(
+          make_scene(scheme, initial, kT, h, find_method("direct")->defaults), limit);
       INFO("theta = " << theta << ", m = " << m);
       CHECK(first_theta(p) == Approx(theta).margin(rounding_tolerance(h)));
       CHECK(first_cor(p) == Approx(0.5).margin(rounding_tolerance(h)));
@@ -209,8 +213,8 @@ TEST_CASE(
   // theta = 1/2: a plastic impact, u_h = phi after it, as the limit with COR 0: only rounding.
   for (std::int64_t m : {250, 2500, 25000}) {
     const double h = step_with_fraction(kOffGridU0, m, 0.5);
-    const ConvergencePoint p =
-        measure_convergence("direct", scheme, initial, kT, h, model_of(0, 0.0));
+    const ConvergencePoint p = measure_convergence(
+        make_scene(scheme, initial, kT, h, find_method("direct")->defaults), model_of(0, 0.0));
     CHECK(p.errors.sup_u <= rounding_tolerance(h));
   }
   // The limits are (2-1)-(2-4) solutions that differ: (1 - e)(T - t*) apart from the elastic one.
@@ -229,7 +233,8 @@ TEST_CASE(
     "[claim][convergence]") {
   const Model model = model_of(-kGravity, std::nullopt);
   for (double h : {1e-2, 1e-3, 1e-4}) {
-    const ConvergencePoint p = measure_convergence("direct", model, {5.0, -1.0}, kT, h);
+    const ConvergencePoint p =
+        measure_convergence(make_scene(model, {5.0, -1.0}, kT, h, find_method("direct")->defaults));
     INFO("h = " << h);
     // Each of the n = T/h terms h N^l carries a rounding of a few eps (max|v| + |f| T).
     const double n = kT / h, tol = 4 * kEps * n * (15.0 + kGravity * kT);

@@ -10,7 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "analysis/convergence.hpp"
+#include "analysis/energy_identity.hpp"
+#include "analysis/path_distance.hpp"
+#include "analysis/test_functions.hpp"
+#include "analysis/weak_solution.hpp"
 #include "reference_support.hpp"
 
 using namespace impact;
@@ -65,11 +68,17 @@ TEST_CASE("lemma4: the cheap numbers match reference.toml", "[lemma4][regression
       if (hs[i] < 1e-4) continue;
       INFO(scene.name << " h = " << hs[i]);
       const double tol = 1e-13 / hs[i] + 1e-12;
-      CHECK(std::fabs(sup_distance("direct", "moreau_jean", scene.model, scene.initial, kT, hs[i]) -
+      CHECK(std::fabs(sup_distance(make_scene(scene.model, scene.initial, kT, hs[i],
+                                              find_method("direct")->defaults),
+                                   find_method("moreau_jean")->defaults) -
                       dm[i]) <= tol);
-      CHECK(std::fabs(sup_distance("direct", "exact", scene.model, scene.initial, kT, hs[i]) -
+      CHECK(std::fabs(sup_distance(make_scene(scene.model, scene.initial, kT, hs[i],
+                                              find_method("direct")->defaults),
+                                   find_method("exact")->defaults) -
                       de[i]) <= tol);
-      CHECK(std::fabs(sup_distance("moreau_jean", "exact", scene.model, scene.initial, kT, hs[i]) -
+      CHECK(std::fabs(sup_distance(make_scene(scene.model, scene.initial, kT, hs[i],
+                                              find_method("moreau_jean")->defaults),
+                                   find_method("exact")->defaults) -
                       me[i]) <= tol);
       ++recomputed;
     }
@@ -104,10 +113,13 @@ TEST_CASE(
     const double h = 5.0 / m;
     INFO("h = " << h);
     const double tol = 1e-13 / h + 1e-12;
-    CHECK(sup_distance("direct", "exact", Model{}, {5.0, -1.0}, kT, h) == Approx(h).margin(tol));
-    CHECK(sup_distance("moreau_jean", "exact", Model{}, {5.0, -1.0}, kT, h) ==
-          Approx(h).margin(tol));
-    CHECK(sup_distance("direct", "moreau_jean", Model{}, {5.0, -1.0}, kT, h) <= tol);
+    CHECK(sup_distance(make_scene(Model{}, {5.0, -1.0}, kT, h, find_method("direct")->defaults),
+                       find_method("exact")->defaults) == Approx(h).margin(tol));
+    CHECK(
+        sup_distance(make_scene(Model{}, {5.0, -1.0}, kT, h, find_method("moreau_jean")->defaults),
+                     find_method("exact")->defaults) == Approx(h).margin(tol));
+    CHECK(sup_distance(make_scene(Model{}, {5.0, -1.0}, kT, h, find_method("direct")->defaults),
+                       find_method("moreau_jean")->defaults) <= tol);
   }
   // Off the grid and under gravity with COR = 1 given: first order over the experiment's range,
   // 1 within the scatter that the position of each impact in its step causes.

@@ -13,9 +13,6 @@
 //   path_theta_<k>.csv      t, u_h, u_exact for theta = 0, 1/4, 1/2, 3/4 (k = 0..3) at m = 250,
 //                           with the exact solution of COR |1 - 2 theta| on the same grid
 //   summary.toml            the numbers of reference.toml
-#include "analysis/convergence.hpp"
-#include "analysis/experiment.hpp"
-
 #include <toml++/toml.h>
 
 #include <algorithm>
@@ -27,6 +24,11 @@
 #include <string>
 #include <vector>
 
+#include "analysis/experiment.hpp"
+#include "analysis/fit.hpp"
+#include "analysis/order_table.hpp"
+#include "analysis/path_distance.hpp"
+#include "analysis/proof_tallies.hpp"
 #include "impact/exact.hpp"
 #include "impact/output.hpp"
 #include "impact/registry.hpp"
@@ -113,7 +115,8 @@ toml::table run_series(const Series& s, const std::string& dir) {
          "energy_loss\n";
   std::vector<double> hs, sup, theta, cor, printed, corrected, compl410, drop, loss;
   for (double h : s.h) {
-    const ConvergencePoint p = impact::measure_convergence(s.method, s.model, s.initial, kT, h);
+    const ConvergencePoint p = impact::measure_convergence(
+        impact::make_scene(s.model, s.initial, kT, h, impact::find_method(s.method)->defaults));
     hs.push_back(p.h);
     sup.push_back(p.errors.sup_u);
     theta.push_back(first_theta(p));
@@ -193,7 +196,8 @@ toml::table run_subsequence(const Subsequence& sub, const std::string& dir) {
   std::vector<double> hs, sup, cor;
   for (std::int64_t m : kSubsequenceM) {
     const double h = impact::step_with_fraction(kOffGridU0, m, sub.theta);
-    const ConvergencePoint p = impact::measure_convergence("direct", scheme, initial, kT, h, limit);
+    const ConvergencePoint p = impact::measure_convergence(
+        impact::make_scene(scheme, initial, kT, h, impact::find_method("direct")->defaults), limit);
     hs.push_back(p.h);
     sup.push_back(p.errors.sup_u);
     cor.push_back(first_cor(p));

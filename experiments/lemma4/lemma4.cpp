@@ -29,8 +29,12 @@
 #include <utility>
 #include <vector>
 
-#include "analysis/convergence.hpp"
+#include "analysis/energy_identity.hpp"
 #include "analysis/experiment.hpp"
+#include "analysis/fit.hpp"
+#include "analysis/order_table.hpp"
+#include "analysis/path_distance.hpp"
+#include "analysis/weak_solution.hpp"
 #include "impact/exact.hpp"
 #include "impact/output.hpp"
 
@@ -63,9 +67,15 @@ toml::table paths(const std::string& name, const Model& model, const State& init
   csv << "h,direct_mj,direct_exact,mj_exact\n";
   std::vector<double> dm, de, me;
   for (double h : hs) {
-    dm.push_back(impact::sup_distance("direct", "moreau_jean", model, initial, kT, h));
-    de.push_back(impact::sup_distance("direct", "exact", model, initial, kT, h));
-    me.push_back(impact::sup_distance("moreau_jean", "exact", model, initial, kT, h));
+    dm.push_back(impact::sup_distance(
+        impact::make_scene(model, initial, kT, h, impact::find_method("direct")->defaults),
+        impact::find_method("moreau_jean")->defaults));
+    de.push_back(impact::sup_distance(
+        impact::make_scene(model, initial, kT, h, impact::find_method("direct")->defaults),
+        impact::find_method("exact")->defaults));
+    me.push_back(impact::sup_distance(
+        impact::make_scene(model, initial, kT, h, impact::find_method("moreau_jean")->defaults),
+        impact::find_method("exact")->defaults));
     csv << impact::round_trip(h) << ',' << impact::round_trip(dm.back()) << ','
         << impact::round_trip(de.back()) << ',' << impact::round_trip(me.back()) << '\n';
   }
