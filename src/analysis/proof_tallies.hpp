@@ -101,10 +101,4 @@ struct ConvergencePoint {
 ConvergencePoint measure_convergence(const Scene& scene,
                                      const std::optional<Model>& reference = std::nullopt);
 
-// The step h = t_impact / (m + theta): the grid point t_m lies a fraction theta of a step before
-// the impact at t_impact (for f = 0 the particle is then theta h |v| above the floor at t_m).
-inline double step_with_fraction(double t_impact, std::int64_t m, double theta) {
-  return t_impact / (static_cast<double>(m) + theta);
-}
-
 }  // namespace impact
