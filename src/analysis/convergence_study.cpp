@@ -33,23 +33,6 @@ struct SubsequenceSpec {
 constexpr SubsequenceSpec kSubsequences[] = {
     {"theta_0_25", 0.25}, {"theta_0_5", 0.5}, {"theta_0_75", 0.75}};
 
-std::vector<double> sweep(const StepSweep& s) {
-  return log_spaced(s.h_max, s.h_min, s.count);
-}
-
-std::vector<double> at_least(std::vector<double> h, double floor) {
-  std::erase_if(h, [&](double x) { return x < floor; });
-  return h;
-}
-
-// h = 5 / m nearest each h: the paper's scene (u0 = 5, v0 = -1, f = 0) meets the floor at
-// t* = 5 = m h.
-std::vector<double> aligned(const std::vector<double>& h) {
-  std::vector<double> out;
-  for (double x : h) out.push_back(5.0 / std::round(5.0 / x));
-  return out;
-}
-
 template <class Of>
 std::vector<double> column(const std::vector<ConvergencePoint>& points, Of of) {
   std::vector<double> out;
@@ -175,9 +158,11 @@ std::string path_csv(double theta) {
 }  // namespace
 
 std::vector<ConvergenceSeries> convergence_series(const ConvergenceOptions& options) {
-  const std::vector<double> free_h = at_least(sweep(options.free), options.h_floor);
-  const std::vector<double> aligned_h = at_least(aligned(sweep(options.free)), options.h_floor);
-  const std::vector<double> gravity_h = at_least(sweep(options.gravity), options.h_floor);
+  // u0 = 5, v0 = -1, f = 0 meets the floor at t* = 5.
+  const std::vector<double> free_h = at_least(options.free.steps(), options.h_floor);
+  const std::vector<double> aligned_h =
+      at_least(aligned_steps(options.free.steps(), 5.0), options.h_floor);
+  const std::vector<double> gravity_h = at_least(options.gravity.steps(), options.h_floor);
   const State paper{5.0, -1.0}, off_grid{kOffGridU0, -1.0};
   const Model no_force{}, no_force_cor{.cor = kCor};
   const Model gravity{.f = -kGravity, .cor = std::nullopt},

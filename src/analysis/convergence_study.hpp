@@ -25,6 +25,7 @@
 #include "analysis/experiment.hpp"
 #include "analysis/fit.hpp"
 #include "analysis/proof_tallies.hpp"
+#include "analysis/step_sweep.hpp"
 #include "impact/model.hpp"
 #include "impact/registry.hpp"
 
@@ -34,12 +35,6 @@ inline constexpr double kConvergenceT = 10.0;  // the paper's T
 // u0 = 5.0123 m, v0 = -1 m/s, f = 0: the first impact at t* = 5.0123 s, off the grid for generic
 // h (on it for h = 1e-6: t* = 5012300 h).
 inline constexpr double kOffGridU0 = 5.0123;
-
-// n log-spaced step sizes from h_max down to h_min (log_spaced of fit.hpp).
-struct StepSweep {
-  double h_max = 2e-2, h_min = 1e-6;
-  int count = 20;
-};
 
 // What run_convergence computes; the defaults are the experiment.
 struct ConvergenceOptions {
@@ -87,12 +82,6 @@ struct SubsequenceRun {
   double limit_distance_to_elastic = 0;  // sup |u_limit - u_elastic| on [0, T]
 };
 SubsequenceRun run_subsequence(double theta, const std::vector<std::int64_t>& m);
-
-// The step h = t_impact / (m + theta): the grid point t_m lies a fraction theta of a step before
-// the impact at t_impact (for f = 0 the particle is then theta h |v| above the floor at t_m).
-inline double step_with_fraction(double t_impact, std::int64_t m, double theta) {
-  return t_impact / (static_cast<double>(m) + theta);
-}
 
 // The whole experiment: the series and the subsequences with their data files, and the table of
 // summary.toml.
