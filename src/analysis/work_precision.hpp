@@ -12,7 +12,7 @@
 #include <string_view>
 #include <vector>
 
-#include "analysis/convergence.hpp"
+#include "analysis/fit.hpp"
 #include "impact/error_norms.hpp"
 #include "impact/model.hpp"
 #include "impact/run.hpp"
@@ -87,7 +87,7 @@ std::vector<WorkPrecisionPoint> sweep_steps(const std::string& scene_path,
                                             const std::optional<TimingRule>& rule);
 
 // The observed order of a measure over a curve: the least-squares slope of log error against
-// log h (convergence.hpp's fit_order) over the points whose error is above `floor` (below it the
+// log h (fit.hpp's fit_order) over the points whose error is above `floor` (below it the
 // error is rounding, not discretisation).
 OrderFit observed_order(const std::vector<WorkPrecisionPoint>& points, ErrorMeasure m,
                         double floor = 1e-13);
