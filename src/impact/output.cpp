@@ -1,6 +1,7 @@
 #include "impact/output.hpp"
 
 #include <limits.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -16,22 +17,47 @@
 namespace impact {
 namespace {
 
-// The temporary file being written, removed by the signal handler if the user interrupts a run
-// (one per process: the CLI writes one output at a time).
-char g_temp_path[4096];
+// The temporary file being written, removed by the signal handler if a signal ends the run (one
+// per process: the CLI writes one output at a time). g_temp_set is cleared before the name changes
+// and set after, so that the handler never reads a half-copied name.
+char g_temp_path[PATH_MAX];
+volatile std::sig_atomic_t g_temp_set = 0;
 
-extern "C" void remove_temp_and_exit(int sig) {
-  if (g_temp_path[0] != '\0') unlink(g_temp_path);
-  std::signal(sig, SIG_DFL);
-  std::raise(sig);
+extern "C" void remove_temp_and_reraise(int sig) {
+  if (g_temp_set) unlink(g_temp_path);
+  // With the default action back, the signal ends the process once the handler returns (it is
+  // blocked until then), as it would have without the handler: same exit status, core dump.
+  struct sigaction default_action {};
+  default_action.sa_handler = SIG_DFL;
+  sigaction(sig, &default_action, nullptr);
+  raise(sig);
 }
 
-// Installs the handler unless the signal is ignored: a script's background job ignores SIGINT, and
-// the user's Ctrl-C is not meant for it.
+// Every signal whose default action ends the process (signal(7)), so that only SIGKILL, which
+// cannot be caught, or a power cut can leave a temporary behind.
+constexpr int kFatalSignals[] = {SIGHUP,  SIGINT,  SIGQUIT,   SIGILL,  SIGTRAP, SIGABRT,
+                                 SIGBUS,  SIGFPE,  SIGUSR1,   SIGSEGV, SIGUSR2, SIGPIPE,
+                                 SIGALRM, SIGTERM, SIGSTKFLT, SIGXCPU, SIGXFSZ, SIGVTALRM,
+                                 SIGPROF, SIGIO,   SIGPWR,    SIGSYS};
+
+// Installs the handler where the signal has its default action. An ignored signal stays ignored:
+// a script's background job ignores SIGINT, and the user's Ctrl-C is not meant for it; the CLI
+// ignores SIGXFSZ. A handler found in place stays too: a sanitizer's for SIGSEGV, or this one,
+// installed by an earlier AtomicFile.
 void remove_temp_on(int sig) {
   struct sigaction old {};
-  if (sigaction(sig, nullptr, &old) == 0 && old.sa_handler == SIG_IGN) return;
-  std::signal(sig, remove_temp_and_exit);
+  if (sigaction(sig, nullptr, &old) != 0 || (old.sa_flags & SA_SIGINFO) ||
+      old.sa_handler != SIG_DFL)
+    return;
+  struct sigaction action {};
+  action.sa_handler = remove_temp_and_reraise;
+  sigfillset(&action.sa_mask);
+  sigaction(sig, &action, nullptr);
+}
+
+void remove_temp_on_fatal_signals() {
+  for (int sig : kFatalSignals) remove_temp_on(sig);
+  for (int sig = SIGRTMIN; sig <= SIGRTMAX; ++sig) remove_temp_on(sig);
 }
 
 std::string why() {
@@ -75,7 +101,21 @@ AtomicFile::AtomicFile(const std::string& path) : path_(path) {
       target.substr(0, base) + target.substr(base, NAME_MAX - kSuffix) + ".tmp.XXXXXX";
   std::vector<char> name(pattern.begin(), pattern.end());
   name.push_back('\0');
+  // From mkstemp to the handler knowing the name, signals wait: one that came in between would
+  // leave the temporary.
+  remove_temp_on_fatal_signals();
+  sigset_t all, previous;
+  sigfillset(&all);
+  sigprocmask(SIG_BLOCK, &all, &previous);
   int fd = mkstemp(name.data());
+  const int mkstemp_error = errno;
+  if (fd >= 0 && name.size() <= sizeof g_temp_path) {
+    g_temp_set = 0;
+    std::memcpy(g_temp_path, name.data(), name.size());
+    g_temp_set = 1;
+  }
+  sigprocmask(SIG_SETMASK, &previous, nullptr);
+  errno = mkstemp_error;
   if (fd < 0) throw OutputError(path + ": cannot create the output file: " + why(), true);
   temp_ = name.data();
   target_ = target;
@@ -86,16 +126,20 @@ AtomicFile::AtomicFile(const std::string& path) : path_(path) {
   fchmod(fd, exists ? info.st_mode & 07777 : 0666 & ~mask);
   stream_ = fdopen(fd, "w");
   if (!stream_) {
+    const int error = errno;
     close(fd);
-    unlink(temp_.c_str());
+    forget_temp();
+    errno = error;
     throw OutputError(path + ": cannot open the output file: " + why(), true);
   }
   buffer_.resize(1 << 20);
   std::setvbuf(stream_, buffer_.data(), _IOFBF, buffer_.size());
-  if (temp_.size() < sizeof g_temp_path) {
-    std::memcpy(g_temp_path, temp_.c_str(), temp_.size() + 1);
-    for (int sig : {SIGINT, SIGTERM, SIGHUP}) remove_temp_on(sig);
-  }
+}
+
+// Removes the temporary, and then its name from the signal handler's reach.
+void AtomicFile::forget_temp() {
+  unlink(temp_.c_str());
+  if (temp_ == g_temp_path) g_temp_set = 0;
 }
 
 AtomicFile::~AtomicFile() {
@@ -109,9 +153,10 @@ AtomicFile::~AtomicFile() {
   }
   if (!committed_) {
     if (stream_) std::fclose(stream_);
-    unlink(temp_.c_str());
+    forget_temp();
+  } else if (temp_ == g_temp_path) {
+    g_temp_set = 0;
   }
-  if (temp_ == g_temp_path) g_temp_path[0] = '\0';
 }
 
 void AtomicFile::check() const {

@@ -24,7 +24,8 @@ class OutputError : public std::runtime_error {
 // A file that appears at `path` only on commit(); "-" or "" means standard output. A symbolic link
 // is followed (the file it names is replaced, the link stays). A path that names something other
 // than a regular file, e.g. /dev/null or a named pipe, is written directly: renaming over it would
-// replace the device or pipe itself.
+// replace the device or pipe itself. Every signal whose default action ends the process removes the
+// temporary first.
 class AtomicFile {
  public:
   explicit AtomicFile(const std::string& path);
@@ -39,6 +40,8 @@ class AtomicFile {
   void commit();
 
  private:
+  void forget_temp();
+
   std::string path_;    // as given, for messages
   std::string target_;  // the file that commit() replaces: path_ with symbolic links followed
   std::string temp_;
