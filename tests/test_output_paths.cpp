@@ -1,6 +1,8 @@
 // Where `impact run --out` writes, and what a signal leaves behind: the output rows of the table in
-// tests/README.md that test_cli.cpp and test_hardening.cpp do not cover. The `impact` command runs
-// as a separate process (IMPACT_CLI) in a fresh directory.
+// tests/README.md that test_cli.cpp and test_hardening.cpp do not cover. A path the user names
+// that is a regular file (or does not exist yet) is written to a temporary file and renamed over
+// it; anything else (a descriptor such as /dev/stdout, a device, a pipe) is written in place. The
+// `impact` command runs as a separate process (IMPACT_CLI) in a fresh directory.
 #include <signal.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
@@ -26,6 +28,29 @@ namespace {
 
 const std::string kSource = IMPACT_SOURCE_DIR;
 const std::string kFigure3 = kSource + "/experiments/figure3/no_cor.toml";
+
+// A short scene that reaches the floor (u0 = 0.05, v0 = -1: contact at t = 0.05).
+const std::string kShort =
+    "[initial]\nu0 = 0.05\nv0 = -1.0\n[time]\nT = 0.1\nh = 0.001\n[method]\nname = \"direct\"\n";
+
+// The run must fail with `code`, a message matching `says`, and leave the directory as it was.
+#define CHECK_FAILS_CLEANLY(dir, args, expected_code, says) \
+  do {                                                      \
+    const auto before_ = (dir).entries();                   \
+    const Result r_ = (dir).run(args);                      \
+    INFO("impact " << (args) << "\nstderr: " << r_.err);    \
+    CHECK(r_.code == (expected_code));                      \
+    CHECK_THAT(r_.err, says);                               \
+    CHECK((dir).entries() == before_);                      \
+  } while (false)
+
+// What `impact run s.toml -q` writes to standard output, for comparison.
+std::string expected_csv(const TempDir& dir) {
+  const Result r = dir.run("run s.toml -q");
+  REQUIRE(r.code == 0);
+  REQUIRE(!r.out.empty());
+  return r.out;
+}
 
 // Starts `impact args...` in `cwd` as from a shell prompt: every signal at its default action and
 // unblocked (whatever the test runner ignores, e.g. SIGPIPE or SIGHUP, would be inherited, and
@@ -99,4 +124,78 @@ TEST_CASE("output paths: every signal that ends a run removes the temporary", "[
     CHECK(dir.entries() == std::set<std::string>{"X.csv"});
     CHECK(slurp(dir / "X.csv") == "an earlier result\n");
   }
+}
+
+TEST_CASE("output paths: /dev/stdout and the other names of a descriptor honour >> and >",
+          "[output]") {
+  TempDir dir;
+  dir.write("s.toml", kShort);
+  const std::string csv = expected_csv(dir);
+  const std::vector<std::pair<std::string, std::string>> names{{"/dev/stdout", ">>"},
+                                                               {"/dev/fd/1", ">>"},
+                                                               {"/proc/self/fd/1", ">>"},
+                                                               {"/dev/stderr", "2>>"}};
+  for (const auto& [name, append] : names) {
+    INFO("-o " << name << " " << append << " log.csv");
+    // The CSV is appended to what the log held; it used to be renamed over the log.
+    dir.write("log.csv", "KEEP\n");
+    const Result r = dir.shell("\"$IMPACT\" run s.toml -q -o " + name + " " + append + " log.csv");
+    CHECK(r.code == 0);
+    CHECK(slurp(dir / "log.csv") == "KEEP\n" + csv);
+    CHECK(dir.entries() == std::set<std::string>{"s.toml", "log.csv"});
+  }
+  // Two runs under one `>` write one after the other, as two `echo`s would: both write at the
+  // offset of the one descriptor the shell opened. Not with /dev/stdout: once the first run had
+  // renamed over the log, the code before this test found no file behind /dev/stdout and renamed
+  // over /dev/stdout itself; /dev/fd and /proc/self/fd hold no files of their own.
+  for (const std::string name : {"/dev/fd/1", "/proc/self/fd/1"}) {
+    INFO("-o " << name << " twice under > log.csv");
+    const Result r = dir.shell("{ \"$IMPACT\" run s.toml -q -o " + name +
+                               "; \"$IMPACT\" run s.toml -q -o " + name + "; } > log.csv");
+    CHECK(r.code == 0);
+    CHECK(slurp(dir / "log.csv") == csv + csv);
+  }
+  // A link of one's own to /dev/stdout leads there too, and stays a link.
+  std::filesystem::create_symlink("/dev/stdout", dir / "out.csv");
+  dir.write("log.csv", "KEEP\n");
+  Result r = dir.shell("\"$IMPACT\" run s.toml -q -o out.csv >> log.csv");
+  CHECK(r.code == 0);
+  CHECK(slurp(dir / "log.csv") == "KEEP\n" + csv);
+  CHECK(std::filesystem::is_symlink(dir / "out.csv"));
+  // Standard output a pipe: the reader gets the CSV.
+  r = dir.shell("\"$IMPACT\" run s.toml -q -o /dev/stdout | cat");
+  CHECK(r.code == 0);
+  CHECK(r.out == csv);
+  CHECK(dir.entries() == std::set<std::string>{"s.toml", "log.csv", "out.csv"});
+}
+
+TEST_CASE("output paths: a dangling symbolic link creates the file it names", "[output]") {
+  TempDir dir;
+  dir.write("s.toml", kShort);
+  const std::string csv = expected_csv(dir);
+  // As `>` in a shell does: the link stays and leads to the new file (it used to be replaced by a
+  // regular file).
+  std::filesystem::create_directory(dir / "sub");
+  std::filesystem::create_symlink("sub/real.csv", dir / "link.csv");
+  Result r = dir.run("run s.toml -q -o link.csv");
+  CHECK(r.code == 0);
+  CHECK(std::filesystem::is_symlink(dir / "link.csv"));
+  CHECK(slurp(dir / "sub/real.csv") == csv);
+  CHECK(dir.entries("sub") == std::set<std::string>{"real.csv"});
+  // A chain of links, relative to the directory of each.
+  std::filesystem::create_symlink("../sub/chained.csv", dir / "sub/second.csv");
+  std::filesystem::create_symlink("sub/second.csv", dir / "first.csv");
+  r = dir.run("run s.toml -q -o first.csv");
+  CHECK(r.code == 0);
+  CHECK(slurp(dir / "sub/chained.csv") == csv);
+  CHECK(std::filesystem::is_symlink(dir / "first.csv"));
+  CHECK(std::filesystem::is_symlink(dir / "sub/second.csv"));
+  // A link into a missing directory, and a link to itself: exit 2, the links stay.
+  std::filesystem::create_symlink("no_such_dir/X.csv", dir / "nowhere.csv");
+  CHECK_FAILS_CLEANLY(dir, "run s.toml -o nowhere.csv", 2,
+                      Contains("nowhere.csv: cannot create the output file: No such file"));
+  std::filesystem::create_symlink("loop.csv", dir / "loop.csv");
+  CHECK_FAILS_CLEANLY(dir, "run s.toml -o loop.csv", 2,
+                      Contains("loop.csv: ") && Contains("Too many levels of symbolic links"));
+  CHECK(std::filesystem::is_symlink(dir / "loop.csv"));
 }

@@ -172,7 +172,8 @@ int main(int argc, char** argv) {
       ->allow_extra_args(false);  // one value per --set, so `--set a=1 SCENE` still sees SCENE
   run_cmd->add_option("--out,-o", out_path,
                       "Output CSV file (default: standard output). Written to a temporary file "
-                      "and renamed when the run succeeds.");
+                      "and renamed when the run succeeds; a device, a pipe or /dev/stdout is "
+                      "written in place.");
   run_cmd->add_flag("--quiet,-q", quiet,
                     "Do not print the progress and summary lines on standard error");
   run_cmd->footer(

@@ -1,5 +1,6 @@
 #include "impact/output.hpp"
 
+#include <fcntl.h>
 #include <limits.h>
 #include <signal.h>
 #include <sys/stat.h>
@@ -64,15 +65,55 @@ std::string why() {
   return std::strerror(errno);
 }
 
-// The file a path names after following symbolic links, so that the output replaces the file a
-// link points to and not the link; the path itself if it does not exist (yet).
-std::string resolve_links(const std::string& path) {
-  char* real = realpath(path.c_str(), nullptr);
-  if (!real) return path;
-  std::string resolved = real;
-  std::free(real);
-  return resolved;
+// The directory a path's last name is in ("." for a bare name).
+std::string directory_of(const std::string& path) {
+  const std::size_t slash = path.rfind('/');
+  if (slash == std::string::npos) return ".";
+  return slash == 0 ? "/" : path.substr(0, slash);
 }
+
+// What the symbolic link `link` names, as a path that reaches it from here (a relative link is
+// relative to the link's directory); `link` itself if it cannot be read.
+std::string link_target(const std::string& link) {
+  std::vector<char> text(PATH_MAX);
+  const ssize_t n = readlink(link.c_str(), text.data(), text.size());
+  if (n <= 0 || static_cast<std::size_t>(n) == text.size()) return link;
+  const std::string target(text.data(), static_cast<std::size_t>(n));
+  const std::size_t slash = link.rfind('/');
+  if (target.front() == '/' || slash == std::string::npos) return target;
+  return link.substr(0, slash + 1) + target;
+}
+
+bool same_file(const struct stat& a, const struct stat& b) {
+  return a.st_dev == b.st_dev && a.st_ino == b.st_ino;
+}
+
+// Whether the symbolic link `link` is in /proc, where a link (/proc/self/fd/1, which /dev/stdout
+// and /dev/fd/1 lead to) stands for an open file rather than for the path it shows.
+bool in_proc(const std::string& link) {
+  struct stat dir, proc;
+  return stat(directory_of(link).c_str(), &dir) == 0 && stat("/proc/self", &proc) == 0 &&
+         dir.st_dev == proc.st_dev;
+}
+
+// The descriptor of this process that `link` in /proc stands for (/proc/self/fd/N, also reached
+// as /proc/<pid>/fd/N), or -1 if it stands for something else.
+int own_descriptor(const std::string& link) {
+  struct stat dir, own;
+  if (stat(directory_of(link).c_str(), &dir) != 0) return -1;
+  if (!(stat("/proc/self/fd", &own) == 0 && same_file(dir, own)) &&
+      !(stat("/proc/thread-self/fd", &own) == 0 && same_file(dir, own)))
+    return -1;
+  const std::string name = link.substr(link.rfind('/') + 1);  // npos + 1 == 0
+  int fd = -1;
+  const auto [end, error] = std::from_chars(name.data(), name.data() + name.size(), fd);
+  if (error != std::errc() || end != name.data() + name.size() || fcntl(fd, F_GETFD) == -1)
+    return -1;
+  return fd;
+}
+
+// Linux follows at most 40 symbolic links in one path (path_resolution(7)).
+constexpr int kMaxLinks = 40;
 
 }  // namespace
 
@@ -81,22 +122,35 @@ AtomicFile::AtomicFile(const std::string& path) : path_(path) {
     stream_ = stdout;
     return;
   }
+  // Follow symbolic links one at a time to the file that writing reaches, as the kernel would; a
+  // dangling link leads to the file it names, which the output then creates (as `>` in a shell).
+  std::string target = path;
   struct stat info;
-  const bool exists = stat(path.c_str(), &info) == 0;
+  for (int links = 0; lstat(target.c_str(), &info) == 0 && S_ISLNK(info.st_mode); ++links) {
+    // Renaming over the file such a link shows would replace, e.g., the log that standard output
+    // is appended to, or write where no descriptor of the caller points.
+    if (in_proc(target)) {
+      open_in_place(target);
+      return;
+    }
+    if (links == kMaxLinks) {
+      errno = ELOOP;
+      throw OutputError(path + ": cannot open the output file: " + why(), true);
+    }
+    target = link_target(target);
+  }
+  const bool exists = stat(target.c_str(), &info) == 0;
   if (exists && S_ISDIR(info.st_mode))
     throw OutputError(path + ": --out names a directory; give a file name", true);
+  // A device or a pipe: written in place (it cannot hold a half-written file anyway).
   if (exists && !S_ISREG(info.st_mode)) {
-    // A device or a pipe: write to it in place (it cannot hold a half-written file anyway).
-    stream_ = std::fopen(path.c_str(), "w");
-    if (!stream_) throw OutputError(path + ": cannot open the output file: " + why(), true);
+    open_in_place(target);
     return;
   }
-  const std::string target = resolve_links(path);
   // The temporary lives beside the target (rename is atomic only within one file system); its
   // name is the target's, cut so that the suffix still fits in NAME_MAX.
   constexpr std::size_t kSuffix = sizeof ".tmp.XXXXXX" - 1;
-  const std::size_t slash = target.rfind('/');
-  const std::size_t base = slash == std::string::npos ? 0 : slash + 1;
+  const std::size_t base = target.rfind('/') + 1;  // npos + 1 == 0
   std::string pattern =
       target.substr(0, base) + target.substr(base, NAME_MAX - kSuffix) + ".tmp.XXXXXX";
   std::vector<char> name(pattern.begin(), pattern.end());
@@ -136,6 +190,24 @@ AtomicFile::AtomicFile(const std::string& path) : path_(path) {
   std::setvbuf(stream_, buffer_.data(), _IOFBF, buffer_.size());
 }
 
+void AtomicFile::open_in_place(const std::string& target) {
+  // This process's own descriptor (/dev/stdout): written through, not opened again, so that the
+  // shell's `>>` appends and commands sharing one `>` write one after the other.
+  const int own = own_descriptor(target);
+  if (own >= 0) {
+    const int fd = dup(own);
+    stream_ = fd >= 0 ? fdopen(fd, "w") : nullptr;
+    if (!stream_ && fd >= 0) {
+      const int error = errno;
+      close(fd);
+      errno = error;
+    }
+  } else {
+    stream_ = std::fopen(target.c_str(), "w");
+  }
+  if (!stream_) throw OutputError(path_ + ": cannot open the output file: " + why(), true);
+}
+
 // Removes the temporary, and then its name from the signal handler's reach.
 void AtomicFile::forget_temp() {
   unlink(temp_.c_str());
@@ -147,7 +219,7 @@ AtomicFile::~AtomicFile() {
     std::fflush(stream_);
     return;
   }
-  if (temp_.empty()) {  // a device or pipe written in place
+  if (temp_.empty()) {  // written in place
     if (stream_) std::fclose(stream_);
     return;
   }

@@ -21,10 +21,12 @@ class OutputError : public std::runtime_error {
   bool bad_path;
 };
 
-// A file that appears at `path` only on commit(); "-" or "" means standard output. A symbolic link
-// is followed (the file it names is replaced, the link stays). A path that names something other
-// than a regular file, e.g. /dev/null or a named pipe, is written directly: renaming over it would
-// replace the device or pipe itself. Every signal whose default action ends the process removes the
+// A file that appears at `path` only on commit(); "-" or "" means standard output. Symbolic links
+// are followed, and stay: the file a link names is replaced, or created if the link dangles. What
+// is not a regular file is written in place, as it stands: a device or a named pipe (renaming over
+// it would replace the node itself), and an open descriptor such as /dev/stdout, /dev/fd/N or
+// /proc/self/fd/N (written through the caller's descriptor, so that `>>` appends, even when it is
+// redirected to a regular file). Every signal whose default action ends the process removes the
 // temporary first.
 class AtomicFile {
  public:
@@ -40,6 +42,7 @@ class AtomicFile {
   void commit();
 
  private:
+  void open_in_place(const std::string& target);
   void forget_temp();
 
   std::string path_;    // as given, for messages
