@@ -33,6 +33,11 @@ const std::string kFigure3 = kSource + "/experiments/figure3/no_cor.toml";
 const std::string kShort =
     "[initial]\nu0 = 0.05\nv0 = -1.0\n[time]\nT = 0.1\nh = 0.001\n[method]\nname = \"direct\"\n";
 
+// u0 + v0 h = 2e308 overflows on the first step: a run that starts fails with exit 1, so exit 2
+// shows that the output path was refused before the run.
+const std::string kOverflow =
+    "[initial]\nu0 = 1e308\nv0 = 1e308\n[time]\nT = 10.0\nh = 1.0\n[method]\nname = \"direct\"\n";
+
 // The run must fail with `code`, a message matching `says`, and leave the directory as it was.
 #define CHECK_FAILS_CLEANLY(dir, args, expected_code, says) \
   do {                                                      \
@@ -198,4 +203,35 @@ TEST_CASE("output paths: a dangling symbolic link creates the file it names", "[
   CHECK_FAILS_CLEANLY(dir, "run s.toml -o loop.csv", 2,
                       Contains("loop.csv: ") && Contains("Too many levels of symbolic links"));
   CHECK(std::filesystem::is_symlink(dir / "loop.csv"));
+}
+
+TEST_CASE("output paths: a name longer than NAME_MAX or PATH_MAX exits 2 before the run",
+          "[output]") {
+  TempDir dir;
+  dir.write("s.toml", kShort);
+  dir.write("overflow.toml", kOverflow);
+  // 255 bytes is the longest name (NAME_MAX): it works, its temporary's name is cut to fit.
+  const std::string longest = std::string(251, 'x') + ".csv";
+  Result r = dir.run("run s.toml -q -o " + longest);
+  CHECK(r.code == 0);
+  CHECK(dir.entries() == std::set<std::string>{"s.toml", "overflow.toml", longest});
+  std::filesystem::remove(dir / longest);
+  // 256 bytes: refused at once (it used to fail at the rename after the whole run, exit 1).
+  const std::string too_long = std::string(252, 'x') + ".csv";
+  for (const std::string scene : {"s.toml", "overflow.toml"})
+    CHECK_FAILS_CLEANLY(
+        dir, "run " + scene + " -o " + too_long, 2,
+        Contains(too_long + ": the file name is 256 bytes long") && Contains("255 (NAME_MAX)"));
+  // The same name reached through a symbolic link: the link stays as it is.
+  std::filesystem::create_symlink(too_long, dir / "link.csv");
+  CHECK_FAILS_CLEANLY(dir, "run overflow.toml -o link.csv", 2,
+                      Contains("link.csv: the file name it leads to is 256 bytes long"));
+  CHECK(std::filesystem::is_symlink(dir / "link.csv"));
+  // A path of 4096 bytes or more (PATH_MAX counts the terminating NUL), each name short enough.
+  std::string deep;
+  for (int i = 0; i < 17; ++i) deep += std::string(250, 'd') + "/";
+  deep += "X.csv";
+  CHECK_FAILS_CLEANLY(
+      dir, "run overflow.toml -o " + deep, 2,
+      Contains(deep + ": the path is 4272 bytes long") && Contains("4095 (PATH_MAX)"));
 }

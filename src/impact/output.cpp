@@ -122,6 +122,12 @@ AtomicFile::AtomicFile(const std::string& path) : path_(path) {
     stream_ = stdout;
     return;
   }
+  // A path the system cannot take would otherwise fail only at the rename, after the whole run.
+  if (path.size() >= PATH_MAX)
+    throw OutputError(path + ": the path is " + std::to_string(path.size()) +
+                          " bytes long; the limit is " + std::to_string(PATH_MAX - 1) +
+                          " (PATH_MAX)",
+                      true);
   // Follow symbolic links one at a time to the file that writing reaches, as the kernel would; a
   // dangling link leads to the file it names, which the output then creates (as `>` in a shell).
   std::string target = path;
@@ -148,11 +154,21 @@ AtomicFile::AtomicFile(const std::string& path) : path_(path) {
     return;
   }
   // The temporary lives beside the target (rename is atomic only within one file system); its
-  // name is the target's, cut so that the suffix still fits in NAME_MAX.
-  constexpr std::size_t kSuffix = sizeof ".tmp.XXXXXX" - 1;
+  // name is the target's, cut so that the suffix still fits in NAME_MAX. The target's name must
+  // fit as it is.
+  const std::string directory = directory_of(target);
   const std::size_t base = target.rfind('/') + 1;  // npos + 1 == 0
-  std::string pattern =
-      target.substr(0, base) + target.substr(base, NAME_MAX - kSuffix) + ".tmp.XXXXXX";
+  long name_max = pathconf(directory.c_str(), _PC_NAME_MAX);
+  if (name_max <= 0) name_max = NAME_MAX;
+  if (target.size() - base > static_cast<std::size_t>(name_max))
+    throw OutputError(path + ": the file name " + (target == path ? "" : "it leads to ") + "is " +
+                          std::to_string(target.size() - base) + " bytes long; the limit is " +
+                          std::to_string(name_max) + " (NAME_MAX)",
+                      true);
+  constexpr std::size_t kSuffix = sizeof ".tmp.XXXXXX" - 1;
+  std::string pattern = target.substr(0, base) +
+                        target.substr(base, static_cast<std::size_t>(name_max) - kSuffix) +
+                        ".tmp.XXXXXX";
   std::vector<char> name(pattern.begin(), pattern.end());
   name.push_back('\0');
   // From mkstemp to the handler knowing the name, signals wait: one that came in between would

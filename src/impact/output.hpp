@@ -26,8 +26,9 @@ class OutputError : public std::runtime_error {
 // is not a regular file is written in place, as it stands: a device or a named pipe (renaming over
 // it would replace the node itself), and an open descriptor such as /dev/stdout, /dev/fd/N or
 // /proc/self/fd/N (written through the caller's descriptor, so that `>>` appends, even when it is
-// redirected to a regular file). Every signal whose default action ends the process removes the
-// temporary first.
+// redirected to a regular file). Refused before any work, as bad paths: a name longer than
+// NAME_MAX or a path longer than PATH_MAX. Every signal whose default action ends the process
+// removes the temporary first.
 class AtomicFile {
  public:
   explicit AtomicFile(const std::string& path);
