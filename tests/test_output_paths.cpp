@@ -235,3 +235,42 @@ TEST_CASE("output paths: a name longer than NAME_MAX or PATH_MAX exits 2 before 
       dir, "run overflow.toml -o " + deep, 2,
       Contains(deep + ": the path is 4272 bytes long") && Contains("4095 (PATH_MAX)"));
 }
+
+TEST_CASE("output paths: a read-only file is refused with exit 2", "[output]") {
+  TempDir dir;
+  dir.write("s.toml", kShort);
+  dir.write("overflow.toml", kOverflow);
+  dir.write("X.csv", "an earlier result\n");
+  // Mode bits rather than access(2): root may write anything, and the tests run as root in CI.
+  chmod((dir / "X.csv").c_str(), 0444);
+  CHECK_FAILS_CLEANLY(dir, "run overflow.toml -o X.csv", 2,
+                      Contains("X.csv: is read-only (mode 0444"));
+  CHECK_FAILS_CLEANLY(dir, "run s.toml -o X.csv", 2, Contains("X.csv: is read-only"));
+  // Through a link too.
+  std::filesystem::create_symlink("X.csv", dir / "link.csv");
+  CHECK_FAILS_CLEANLY(dir, "run s.toml -o link.csv", 2, Contains("link.csv: is read-only"));
+  CHECK(slurp(dir / "X.csv") == "an earlier result\n");
+  struct stat info;
+  REQUIRE(stat((dir / "X.csv").c_str(), &info) == 0);
+  CHECK((info.st_mode & 07777) == 0444);
+}
+
+TEST_CASE("output paths: a read-only directory is named, exit 2", "[output]") {
+  TempDir dir;
+  dir.write("s.toml", kShort);
+  std::filesystem::create_directory(dir / "ro");
+  dir.write("ro/X.csv", "an earlier result\n");
+  // The file is writable, but its replacement is created beside it. Checked by the directory's
+  // mode bits, which hold for root as well.
+  chmod((dir / "ro").c_str(), 0555);
+  CHECK_FAILS_CLEANLY(dir, "run s.toml -o ro/X.csv", 2,
+                      Contains("ro/X.csv: cannot create the output file: the directory 'ro' is "
+                               "not writable"));
+  CHECK_FAILS_CLEANLY(dir, "run s.toml -o ro/new.csv", 2,
+                      Contains("ro/new.csv: cannot create the output file: the directory 'ro' is "
+                               "not writable"));
+  CHECK(dir.entries("ro") == std::set<std::string>{"X.csv"});
+  CHECK(slurp(dir / "ro/X.csv") == "an earlier result\n");
+  // Writable again, so that TempDir can empty it when the test runs as another user than root.
+  chmod((dir / "ro").c_str(), 0755);
+}

@@ -65,6 +65,18 @@ std::string why() {
   return std::strerror(errno);
 }
 
+// Whether this process may write `path` (`info` from stat), and if not, why_not: its mode bits,
+// and what access(2) says. The mode bits are checked too because access lets root write anything:
+// a file and a directory refuse their owner, and so root, alike.
+bool writable(const std::string& path, const struct stat& info, std::string& why_not) {
+  const bool allowed = faccessat(AT_FDCWD, path.c_str(), W_OK, AT_EACCESS) == 0;
+  if (allowed && (info.st_mode & 0222) != 0) return true;
+  char mode[8];
+  std::snprintf(mode, sizeof mode, "%04o", static_cast<unsigned>(info.st_mode & 07777));
+  why_not = std::string("mode ") + mode + (allowed ? "" : ": " + why());
+  return false;
+}
+
 // The directory a path's last name is in ("." for a bare name).
 std::string directory_of(const std::string& path) {
   const std::size_t slash = path.rfind('/');
@@ -153,10 +165,20 @@ AtomicFile::AtomicFile(const std::string& path) : path_(path) {
     open_in_place(target);
     return;
   }
+  // Refused, as `>` in a shell would be: the rename would replace the file regardless.
+  std::string why_not;
+  if (exists && !writable(target, info, why_not))
+    throw OutputError(path + ": is read-only (" + why_not + "); not replacing it", true);
+  const std::string directory = directory_of(target);
+  struct stat dir_info;
+  if (stat(directory.c_str(), &dir_info) == 0 && !writable(directory, dir_info, why_not))
+    throw OutputError(path + ": cannot create the output file: the directory '" + directory +
+                          "' is not writable (" + why_not +
+                          "); the output is written to a temporary file beside its target",
+                      true);
   // The temporary lives beside the target (rename is atomic only within one file system); its
   // name is the target's, cut so that the suffix still fits in NAME_MAX. The target's name must
   // fit as it is.
-  const std::string directory = directory_of(target);
   const std::size_t base = target.rfind('/') + 1;  // npos + 1 == 0
   long name_max = pathconf(directory.c_str(), _PC_NAME_MAX);
   if (name_max <= 0) name_max = NAME_MAX;

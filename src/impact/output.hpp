@@ -26,7 +26,8 @@ class OutputError : public std::runtime_error {
 // is not a regular file is written in place, as it stands: a device or a named pipe (renaming over
 // it would replace the node itself), and an open descriptor such as /dev/stdout, /dev/fd/N or
 // /proc/self/fd/N (written through the caller's descriptor, so that `>>` appends, even when it is
-// redirected to a regular file). Refused before any work, as bad paths: a name longer than
+// redirected to a regular file). Refused before any work, as bad paths: a read-only file, a
+// directory that is not writable (checked by mode bits too, so also for root), a name longer than
 // NAME_MAX or a path longer than PATH_MAX. Every signal whose default action ends the process
 // removes the temporary first.
 class AtomicFile {
