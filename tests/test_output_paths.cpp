@@ -274,3 +274,22 @@ TEST_CASE("output paths: a read-only directory is named, exit 2", "[output]") {
   // Writable again, so that TempDir can empty it when the test runs as another user than root.
   chmod((dir / "ro").c_str(), 0755);
 }
+
+TEST_CASE("output paths: a numerical failure tells whether rows went out", "[output]") {
+  TempDir dir;
+  // fb_newton stops at step 4 (test_cli.cpp, "a numerical failure exits 1, ..."): rows for
+  // l = 0..3 have been written by then.
+  dir.write("fail.toml",
+            "[initial]\nu0 = 0.005\nv0 = -1.0\n[time]\nT = 0.01\nh = 0.001\n"
+            "[method]\nname = \"fb_newton\"\nmax_iterations = 3\n");
+  dir.write("log.csv", "KEEP\n");
+  Result r = dir.shell("\"$IMPACT\" run fail.toml -o /dev/stdout >> log.csv");
+  CHECK(r.code == 1);
+  CHECK_THAT(r.err, Contains("numerical failure") && !Contains("no output file written"));
+  CHECK(slurp(dir / "log.csv").rfind("KEEP\nt,u,v\n0,", 0) == 0);
+  // To a file of its own name, nothing is written.
+  r = dir.run("run fail.toml -o X.csv");
+  CHECK(r.code == 1);
+  CHECK_THAT(r.err, Contains("(no output file written)"));
+  CHECK(dir.entries() == std::set<std::string>{"fail.toml", "log.csv"});
+}

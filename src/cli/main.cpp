@@ -83,8 +83,10 @@ bool same_file(const std::string& a, const std::string& b) {
          sa.st_ino == sb.st_ino;
 }
 
+// `in_place` tells main() whether rows may have gone out before a failure (to standard output, a
+// pipe, a device) or nothing was written (a file that appears only when the run succeeds).
 int run(const std::string& scene_path, const std::vector<std::string>& overrides,
-        const std::string& out_path, bool quiet) {
+        const std::string& out_path, bool quiet, bool& in_place) {
   using namespace impact;
   const auto start = Clock::now();
   Scene scene;
@@ -97,6 +99,7 @@ int run(const std::string& scene_path, const std::vector<std::string>& overrides
     throw OutputError(out_path + ": --out names the scene file itself; give another file name",
                       true);
   AtomicFile file(out_path);
+  in_place = file.in_place();
   CsvWriter csv(file.stream(), scene.model, scene.output.channels);
   csv.header();
   RowSchedule rows(scene.output.every, scene.grid.steps);
@@ -195,8 +198,9 @@ int main(int argc, char** argv) {
     return kBadInput;
   }
 
+  bool in_place = true;
   try {
-    return run(scene_path, overrides, out_path, quiet);
+    return run(scene_path, overrides, out_path, quiet, in_place);
   } catch (const impact::SceneError& e) {
     std::fprintf(stderr, "impact: error: %s\n", e.what());
     return kBadInput;
@@ -205,7 +209,7 @@ int main(int argc, char** argv) {
     return e.bad_path ? kBadInput : kNumericalFailure;
   } catch (const impact::NumericalError& e) {
     std::fprintf(stderr, "impact: numerical failure: %s%s\n", e.what(),
-                 out_path.empty() || out_path == "-" ? "" : " (no output file written)");
+                 in_place ? "" : " (no output file written)");
     return kNumericalFailure;
   } catch (const std::exception& e) {
     // Caught so that the stack unwinds and AtomicFile removes its temporary file.

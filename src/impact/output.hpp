@@ -42,6 +42,8 @@ class AtomicFile {
   // can stop early instead of computing output that cannot be stored.
   void check() const;
   void commit();
+  // Written as it goes (standard output, a device, a pipe, a descriptor), not through a temporary.
+  bool in_place() const { return temp_.empty(); }
 
  private:
   void open_in_place(const std::string& target);
