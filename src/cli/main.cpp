@@ -91,6 +91,14 @@ int run(const std::string& scene_path, const std::vector<std::string>& overrides
   const auto start = Clock::now();
   Run loaded = load_run(scene_path, overrides);
   const Scene& scene = loaded.scene;
+  // T not a multiple of h: the grid stops short of T (Grid::covering); say so, and which h fits.
+  if (!quiet && scene.grid.end() < scene.T && scene.T - scene.grid.end() > 1e-12 * scene.T)
+    std::fprintf(stderr,
+                 "impact: note: T = %s is not a multiple of h = %s: the run ends at t = %s, the "
+                 "last grid time before T; h = %s divides T\n",
+                 round_trip(scene.T).c_str(), round_trip(scene.grid.h).c_str(),
+                 round_trip(scene.grid.end()).c_str(),
+                 round_trip(scene.T / static_cast<double>(scene.grid.steps + 1)).c_str());
   const bool to_stdout = out_path.empty() || out_path == "-";
   if (!to_stdout && same_file(out_path, scene_path))
     throw OutputError(out_path + ": --out names the scene file itself; give another file name",
