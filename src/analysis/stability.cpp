@@ -27,6 +27,7 @@ class StabilityObserver {
         grid_(scene.grid),
         exact_(scene.model, scene.initial),
         max_work_(options.max_work),
+        also_(options.also),
         check_(check),
         previous_(scene.initial),
         max_u_(std::fabs(scene.initial.u)),
@@ -35,6 +36,7 @@ class StabilityObserver {
   }
 
   void operator()(std::int64_t l, const State& s, const StepInfo& info) {
+    if (also_) also_(l, s, info);
     const double t = grid_.t(l);
     check_.min_gap = std::fmin(check_.min_gap, s.u - model_.phi);
     const State reference = exact_.at(t);
@@ -89,6 +91,7 @@ class StabilityObserver {
   const Grid& grid_;
   const ExactSolution exact_;
   const std::int64_t max_work_;
+  const std::function<void(std::int64_t, const State&, const StepInfo&)>& also_;
   std::optional<FbNewtonParams> smoothing_;
   StabilityCheck& check_;
   State previous_;

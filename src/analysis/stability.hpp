@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <string>
 #include <string_view>
@@ -36,6 +37,8 @@ struct StabilityOptions {
   // Stop the run once the iterations summed over its steps (ODE steps of penalty, Newton
   // iterations of fb_newton) exceed this; 0 means no limit.
   std::int64_t max_work = 0;
+  // Sees every step too, for what the check does not measure (penalty's spring energy).
+  std::function<void(std::int64_t l, const State& s, const StepInfo& info)> also;
 };
 
 struct StabilityCheck {

@@ -64,7 +64,7 @@ StabilityRun run_extreme_case(const ExtremeCase& c, std::string_view method, int
   // u0 = phi + gap0 rounds to the floor's ulp; gap0 = 0 gives u0 = phi exactly.
   const Scene scene =
       make_scene(Model{c.phi, c.f, c.cor}, State{c.phi + c.gap0, c.v0}, T, h, info->defaults);
-  return run_stability_check(scene, penalty ? kMaxOdeSteps : 0);
+  return run_stability_check(scene, {penalty ? kMaxOdeSteps : 0, {}});
 }
 
 StabilityRun run_extreme_case(std::string_view name, std::string_view method, int log_h) {

@@ -6,12 +6,12 @@
 
 namespace impact {
 
-StabilityRun run_stability_check(const Scene& scene, std::int64_t max_work) {
+StabilityRun run_stability_check(const Scene& scene, const StabilityOptions& options) {
   StabilityRun run;
   run.T = scene.T;
   run.h = scene.grid.h;
   const auto start = std::chrono::steady_clock::now();
-  run.check = check_stability(scene, {max_work});
+  run.check = check_stability(scene, options);
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;
 }

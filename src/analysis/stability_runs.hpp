@@ -18,8 +18,8 @@ struct StabilityRun {
   double seconds = 0;  // wall time of the run on this machine: the CSV files only
 };
 
-// check_stability of the scene, stopped after max_work iterations (0: no limit), timed.
-StabilityRun run_stability_check(const Scene& scene, std::int64_t max_work = 0);
+// check_stability of the scene, timed.
+StabilityRun run_stability_check(const Scene& scene, const StabilityOptions& options = {});
 
 // The CSV columns of a run, after the columns its caller puts first ("h,T,...,message\n").
 extern const std::string_view kStabilityRunColumns;

@@ -118,7 +118,7 @@ PenaltyStepMap PenaltyStepMap::run() {
       for (int log_h = -6; log_h <= -1; ++log_h) {
         const double h = std::pow(10.0, log_h), T = std::fmin(kRestT, kMaxPenaltySteps * h);
         const Scene scene = penalty_scene(kStepMapSteppers[i], std::pow(10.0, log_c), {0, 0}, T, h);
-        map.cells.push_back({i, log_c, log_h, run_stability_check(scene, kStiffBudget)});
+        map.cells.push_back({i, log_c, log_h, run_stability_check(scene, {kStiffBudget, {}})});
       }
   return map;
 }
