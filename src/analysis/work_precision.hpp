@@ -12,7 +12,7 @@
 #include <string_view>
 #include <vector>
 
-#include "analysis/convergence.hpp"
+#include "analysis/fit.hpp"
 #include "impact/error_norms.hpp"
 #include "impact/model.hpp"
 #include "impact/run.hpp"
@@ -80,14 +80,12 @@ WorkPrecisionPoint measure_point(Make&& make, const Model& model, const State& i
 // only when a timing rule is given (the tests measure errors only).
 WorkPrecisionPoint measure_scene(const Scene& scene, const std::optional<TimingRule>& rule);
 
-// A curve: the scene file with `overrides` (e.g. "method.name=direct") at each step h.
-std::vector<WorkPrecisionPoint> sweep_steps(const std::string& scene_path,
-                                            const std::vector<std::string>& overrides,
-                                            const std::vector<double>& steps,
+// A curve: the scene (its method) on the grid of each step h covering its [0, T].
+std::vector<WorkPrecisionPoint> sweep_steps(Scene scene, const std::vector<double>& steps,
                                             const std::optional<TimingRule>& rule);
 
 // The observed order of a measure over a curve: the least-squares slope of log error against
-// log h (convergence.hpp's fit_order) over the points whose error is above `floor` (below it the
+// log h (fit.hpp's fit_order) over the points whose error is above `floor` (below it the
 // error is rounding, not discretisation).
 OrderFit observed_order(const std::vector<WorkPrecisionPoint>& points, ErrorMeasure m,
                         double floor = 1e-13);
