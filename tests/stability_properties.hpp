@@ -103,7 +103,7 @@ inline Catch::Generators::GeneratorWrapper<RandomScene> random_scenes(std::uint6
       std::unique_ptr<Catch::Generators::IGenerator<RandomScene>>(new RandomScenes(seed, count)));
 }
 
-// What a run did, step by step, against the properties of issue 5.
+// What a run did, step by step, against the stability properties.
 struct Properties {
   bool finite = true;
   double min_gap = std::numeric_limits<double>::infinity();

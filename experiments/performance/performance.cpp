@@ -1,4 +1,4 @@
-// Throughput of the solvers (issue 4), with Google Benchmark. CPU time of the solve alone, output
+// Throughput of the solvers, with Google Benchmark. CPU time of the solve alone, output
 // off, after a warm-up, repeated; the minimum and the median over the repetitions are reported.
 //   stepper/<method>/<scene>   ns per step through simulate() (as `impact run` calls it), for
 //                              direct, moreau_jean, fb_newton, penalty (per grid step and per ODE
