@@ -22,7 +22,6 @@
 namespace impact::stability_properties {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
-constexpr double kGravity = -9.80665;
 
 // ---- Random scenes over the extreme ranges ----
 

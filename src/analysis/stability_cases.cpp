@@ -9,9 +9,7 @@
 namespace impact {
 namespace {
 
-constexpr double kGravity = -9.80665;
-// Grid steps per run (penalty: fewer, it costs ~1 us per step) and the work budget of penalty.
-constexpr double kMaxSteps = 1e5, kMaxPenaltySteps = 2e4;
+// The work budget of penalty.
 constexpr std::int64_t kMaxOdeSteps = 2'000'000;
 
 std::size_t case_index(std::string_view name) {

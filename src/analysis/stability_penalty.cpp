@@ -6,11 +6,6 @@
 #include "impact/run.hpp"
 
 namespace impact {
-namespace {
-
-constexpr double kGravity = -9.80665;
-
-}  // namespace
 
 Scene penalty_scene(const std::string& stepper, double c_N, const State& initial, double T,
                     double h) {

@@ -12,6 +12,12 @@
 
 namespace impact {
 
+// The body force of the gravity scenes of the study: f = -g.
+inline constexpr double kGravity = -9.80665;
+// Grid steps per run of the maps (penalty: fewer, it costs ~1 us per step): a run at step h covers
+// min(T, max_steps h), so the smallest steps see the start of a scene only.
+inline constexpr double kMaxSteps = 1e5, kMaxPenaltySteps = 2e4;
+
 struct StabilityRun {
   StabilityCheck check;
   double T = 0, h = 0;

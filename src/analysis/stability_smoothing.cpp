@@ -11,8 +11,6 @@
 namespace impact {
 namespace {
 
-constexpr double kGravity = -9.80665;
-constexpr double kMaxSteps = 1e5;  // grid steps per run, as in the extreme cases
 constexpr int kLogEpsMin = -15, kLogEpsMax = -2;
 
 // The bounce has COR = 1, so that its scheme is accurate as h -> 0 and the map shows where the

@@ -13,8 +13,6 @@ namespace {
 constexpr double kRestT = 0.1;
 constexpr std::int64_t kStiffBudget = 100'000;
 constexpr double kStep = 1e-3;
-// The c_N x h map: grid steps per run, as the extreme cases give penalty.
-constexpr double kMaxPenaltySteps = 2e4;
 const std::vector<std::string> kStepMapSteppers = {"rk8pd", "msbdf"};
 
 StiffnessCell bounce_cell(std::size_t i, int log_c) {
