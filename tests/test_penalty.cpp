@@ -288,9 +288,10 @@ TEST_CASE("penalty: the scene reader reads stiffness, stepper, rtol and atol wit
   CHECK_THAT(read_error("stifness = 1e8\n"), Contains("stiffness") && Contains("stepper"));
 }
 
-TEST_CASE("error in the paper: N = c_N max(u - phi, 0) would push a particle above the floor: "
-          "penalty uses c_N max(phi - u, 0)",
-          "[penalty][claim]") {
+TEST_CASE(
+    "error in the paper: N = c_N max(u - phi, 0) would push a particle above the floor: "
+    "penalty uses c_N max(phi - u, 0)",
+    "[penalty][claim]") {
   // Section 5 writes N = p(u - phi), p(r) = c_N max(r, 0): at u = 5 above a floor at 0 that is a
   // force c_N * 5 > 0 on a free particle. The physical law acts only on penetration.
   const double c_N = 1e6, h = 1e-3;
@@ -304,4 +305,25 @@ TEST_CASE("error in the paper: N = c_N max(u - phi, 0) would push a particle abo
   State penetrating{-1e-4, -1.0};
   pen.initialize(penetrating, 0);
   CHECK(pen.do_step(penetrating, 0).contact_force > 0.0);  // it pushes back on penetration
+}
+
+TEST_CASE("penalty: a run stops, with its reason, when it has used up its budget of ODE steps",
+          "[penalty]") {
+  // A particle resting on a stiff floor with an implicit stepper takes ~1e5 ODE steps per grid
+  // step; unbounded, T = 1 ran for minutes. The budget caps the whole run, not one grid step.
+  const Model model{0.0, -9.80665, {}};
+  PenaltyParams p{1e12, "rk2imp", 1e-10, 1e-12};
+  p.max_ode_steps = 20000;
+  Penalty pen(model, 1e-3, p);
+  State s{0.0, 0.0};
+  pen.initialize(s, 0);
+  bool stopped = false;
+  for (std::int64_t l = 0; l < 1000 && !stopped; ++l) stopped = !pen.do_step(s, l).converged;
+  CHECK(stopped);
+  CHECK_THAT(pen.failure_reason(), Catch::Matchers::Contains("budget of ODE steps"));
+  // The automatic budget (0): 1e6 plus 1000 per grid step, enough for free flight.
+  Penalty free(model, 1e-3, PenaltyParams{});
+  State above{5.0, 0.0};
+  free.initialize(above, 0);
+  for (std::int64_t l = 0; l < 1000; ++l) REQUIRE(free.do_step(above, l).converged);
 }

@@ -41,6 +41,10 @@ const gsl_odeiv2_step_type* find_stepper(std::string_view name) {
 // A bound on the ODE steps of one grid step, so that a tolerance the stepper cannot meet ends the
 // run with converged = false instead of looping (practically) forever.
 constexpr unsigned long kMaxOdeSteps = 1'000'000;
+// The automatic budget of a whole run (PenaltyParams::max_ode_steps = 0): kMaxOdeSteps to start
+// with, and this many more per grid step, so that free flight (about one ODE step per grid step)
+// and resolved contacts never meet it while a run that needs 1e5 per step stops within seconds.
+constexpr unsigned long kAutomaticStepsPerGridStep = 1000;
 
 constexpr double kNever = std::numeric_limits<double>::infinity();
 
@@ -116,6 +120,11 @@ struct Penalty::Impl {
   // The last failed step, for failure_reason().
   std::string stepper_name;
   double rtol, atol;
+  // The ODE steps taken since initialize(), at grid step l0, against the run's budget.
+  std::int64_t max_ode_steps = 0;
+  unsigned long run_steps = 0;
+  std::int64_t l0 = 0;
+  bool out_of_budget = false;
   int failure_status = GSL_SUCCESS;
   unsigned long failure_steps = 0;
   double failure_t = 0.0;
@@ -132,6 +141,9 @@ Penalty::Impl::Impl(const Model& model, double grid_h, const PenaltyParams& para
   const gsl_odeiv2_step_type* type = find_stepper(params.stepper);
   if (!type) throw std::invalid_argument("Penalty: unknown GSL stepper \"" + params.stepper + "\"");
   stepper_name = params.stepper;
+  if (params.max_ode_steps < 0)
+    throw std::invalid_argument("Penalty: max_ode_steps must be >= 0 (0: automatic)");
+  max_ode_steps = params.max_ode_steps;
   rtol = params.rtol;
   atol = params.atol;
   w = std::sqrt(c_N);
@@ -203,10 +215,12 @@ Penalty::~Penalty() = default;
 // non-finite state) gives converged = false and leaves s at its t_l value (finite if it was).
 //
 // The COR of the model is not used: compliance is its own impact law (elastic here, COR = 1).
-void Penalty::initialize(const State& s, std::int64_t) {
+void Penalty::initialize(const State& s, std::int64_t l) {
   Impl& m = *impl_;
   gsl_odeiv2_driver_reset(m.driver.get());
   m.y = {s.u - m.phi, s.v, 0.0};
+  m.run_steps = 0;
+  m.l0 = l;
 }
 
 StepInfo Penalty::do_step(State& s, std::int64_t l) {
@@ -222,6 +236,14 @@ StepInfo Penalty::do_step(State& s, std::int64_t l) {
   StepInfo info;
   unsigned long taken = 0;
   int status = GSL_SUCCESS;
+  // This grid step may take kMaxOdeSteps, and no more than what is left of the run's budget.
+  const unsigned long budget =
+      m.max_ode_steps > 0
+          ? static_cast<unsigned long>(m.max_ode_steps)
+          : kMaxOdeSteps + kAutomaticStepsPerGridStep * static_cast<unsigned long>(l + 1 - m.l0);
+  const unsigned long left = budget > m.run_steps ? budget - m.run_steps : 0;
+  const unsigned long limit = std::min(kMaxOdeSteps, left);
+  m.out_of_budget = false;
   while (t < t_end) {
     const double g = m.y[0], v = m.y[1];
     bool flying = g > 0.0 || (g == 0.0 && v > 0.0);
@@ -234,11 +256,11 @@ StepInfo Penalty::do_step(State& s, std::int64_t l) {
     const bool to_kink = tau < t_end - t;
     double target = to_kink ? t + std::fmax(tau, m.tiny) : t_end;
     if (!(target > t)) target = t_end;  // t so large that the piece is below its resolution
-    if (taken >= kMaxOdeSteps) {
+    if (taken >= limit) {
       status = GSL_EMAXITER;
       break;
     }
-    gsl_odeiv2_driver_set_nmax(d, kMaxOdeSteps - taken);
+    gsl_odeiv2_driver_set_nmax(d, limit - taken);
     status = gsl_odeiv2_driver_apply(d, &t, target, m.y.data());
     // On GSL_EMAXITER the driver has taken one step more than its count says.
     taken += d->n + (status == GSL_EMAXITER ? 1 : 0);
@@ -246,6 +268,8 @@ StepInfo Penalty::do_step(State& s, std::int64_t l) {
     if (to_kink) gsl_odeiv2_driver_reset(d);
   }
   info.iterations = static_cast<int>(std::min<unsigned long>(taken, INT_MAX));
+  m.run_steps += taken;
+  m.out_of_budget = status == GSL_EMAXITER && limit < kMaxOdeSteps;
   if (status != GSL_SUCCESS ||
       !(std::isfinite(m.y[0]) && std::isfinite(m.y[1]) && std::isfinite(m.y[2]))) {
     info.converged = false;
@@ -266,7 +290,11 @@ std::string Penalty::failure_reason() const {
   std::ostringstream msg;
   msg.precision(3);
   msg << "GSL odeiv2 stepper " << m.stepper_name << " ";
-  if (m.failure_status == GSL_EMAXITER)
+  if (m.out_of_budget)
+    msg << "used up the run's budget of ODE steps (" << m.run_steps
+        << " since the start; method.max_ode_steps, automatic: " << kMaxOdeSteps << " + "
+        << kAutomaticStepsPerGridStep << " per grid step)";
+  else if (m.failure_status == GSL_EMAXITER)
     msg << "took more than " << kMaxOdeSteps << " ODE steps in this grid step";
   else if (m.failure_status != GSL_SUCCESS)
     msg << "could not meet rtol = " << m.rtol << ", atol = " << m.atol
