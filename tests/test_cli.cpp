@@ -18,7 +18,9 @@
 #include <vector>
 
 #include "cli_support.hpp"
+#include "impact/error_norms.hpp"
 #include "impact/model.hpp"
+#include "impact/output.hpp"
 #include "impact/registry.hpp"
 #include "impact/run.hpp"
 #include "scene/read_scene.hpp"
@@ -360,4 +362,26 @@ TEST_CASE("cli: a numerical failure exits 1, names the step and leaves no output
   REQUIRE(csv.rows.size() == 11);
   CHECK(csv.rows[5][3] > 3);  // iterations of the step ending at t_5 = 0.005
   CHECK(csv.rows[6][2] > 0);  // N: the impact
+}
+
+TEST_CASE("cli: run --against exact prints the errors measure_errors gives for the same scene",
+          "[cli]") {
+  TempDir dir;
+  const std::string scene = std::string(IMPACT_SOURCE_DIR) + "/experiments/figure4/cor075.toml";
+  const Result r = dir.run("run " + scene + " --against exact -o X.csv");
+  REQUIRE(r.code == 0);
+  // The same run through the library: the printed numbers are its errors, to the last digit.
+  impact::Scene s = impact::load_scene(scene);
+  impact::AnyStepper stepper = impact::make_stepper(s);
+  const impact::ErrorNorms e = std::visit(
+      [&](auto& st) { return impact::measure_errors(st, s.model, s.initial, s.grid); }, stepper);
+  CHECK_THAT(r.err, Contains("sup|u - u_exact| = " + impact::round_trip(e.sup_u)));
+  CHECK_THAT(r.err, Contains("h sum|v - v_exact| = " + impact::round_trip(e.l1_v)));
+  CHECK_THAT(r.err, Contains("|E(T) - E_exact(T)| = " + impact::round_trip(e.energy_end)));
+  CHECK_THAT(r.err, Contains("first impact time error = " + impact::round_trip(e.first_impact)));
+  // The CSV is the same as without --against.
+  REQUIRE(dir.run("run " + scene + " -q -o Y.csv").code == 0);
+  CHECK(slurp(dir / "X.csv") == slurp(dir / "Y.csv"));
+  // Only 'exact' is a reference.
+  CHECK(dir.run("run " + scene + " --against direct -o Z.csv").code == 2);
 }

@@ -5,12 +5,15 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "impact/error_norms.hpp"
 #include "impact/output.hpp"
 #include "impact/registry.hpp"
 #include "impact/run.hpp"
@@ -86,7 +89,7 @@ bool same_file(const std::string& a, const std::string& b) {
 // `in_place` tells main() whether rows may have gone out before a failure (to standard output, a
 // pipe, a device) or nothing was written (a file that appears only when the run succeeds).
 int run(const std::string& scene_path, const std::vector<std::string>& overrides,
-        const std::string& out_path, bool quiet, bool& in_place) {
+        const std::string& out_path, bool quiet, bool against_exact, bool& in_place) {
   using namespace impact;
   const auto start = Clock::now();
   Run loaded = load_run(scene_path, overrides);
@@ -127,11 +130,22 @@ int run(const std::string& scene_path, const std::vector<std::string>& overrides
     // Rows are due only at multiples of `every` and at the last step.
     next_event = std::min(every < last - l ? l + every : last, next_check);
   };
-  RunSummary summary = simulate(loaded.stepper, scene.initial, scene.grid,
-                                [&](std::int64_t l, const State& s, const StepInfo& info) {
-                                  if (l == next_event) [[unlikely]]
-                                    event(l, s, info);
-                                });
+  const auto rows_and_progress = [&](std::int64_t l, const State& s, const StepInfo& info) {
+    if (l == next_event) [[unlikely]]
+      event(l, s, info);
+  };
+  std::optional<ErrorObserver> errors;
+  RunSummary summary;
+  if (against_exact) {  // the error against the exact solution, accumulated as the run streams
+    errors.emplace(scene.model, scene.initial, scene.grid);
+    summary = simulate(loaded.stepper, scene.initial, scene.grid,
+                       [&](std::int64_t l, const State& s, const StepInfo& info) {
+                         (*errors)(l, s, info);
+                         rows_and_progress(l, s, info);
+                       });
+  } else {
+    summary = simulate(loaded.stepper, scene.initial, scene.grid, rows_and_progress);
+  }
   file.commit();
   progress.finish();
   const double seconds = seconds_since(start);
@@ -144,6 +158,17 @@ int run(const std::string& scene_path, const std::vector<std::string>& overrides
       std::fprintf(stderr, ", %lld iterations (max %d per step)",
                    static_cast<long long>(summary.iterations), summary.max_iterations);
     std::fprintf(stderr, ", %.3f s wall\n", seconds);
+  }
+  if (errors) {
+    const ErrorNorms e = errors->result(summary);
+    std::fprintf(stderr,
+                 "impact: against exact: sup|u - u_exact| = %s, h sum|v - v_exact| = %s, "
+                 "|E(T) - E_exact(T)| = %s, first impact time error = %s, %.3f s wall\n",
+                 round_trip(e.sup_u).c_str(), round_trip(e.l1_v).c_str(),
+                 round_trip(e.energy_end).c_str(),
+                 std::isnan(e.first_impact) ? "none (no impact in one of the two)"
+                                            : round_trip(e.first_impact).c_str(),
+                 seconds);
   }
   return kOk;
 }
@@ -171,6 +196,7 @@ int main(int argc, char** argv) {
   std::string scene_path, out_path;
   std::vector<std::string> overrides;
   bool quiet = false;
+  std::string against;
   run_cmd->add_option("SCENE", scene_path, "Scene file (TOML); see README.md, 'Scenes'")
       ->required();
   run_cmd
@@ -183,6 +209,13 @@ int main(int argc, char** argv) {
                       "Output CSV file (default: standard output). Written to a temporary file "
                       "and renamed when the run succeeds; a device, a pipe or /dev/stdout is "
                       "written in place.");
+  run_cmd
+      ->add_option("--against", against,
+                   "Also measure the run against a reference solution and print the errors on "
+                   "standard error: 'exact' (the event-driven solution) gives the sup-norm error "
+                   "of u, the L1 error of v, the final energy error and the first impact time's "
+                   "error, with the wall time")
+      ->check(CLI::IsMember({"exact"}));
   run_cmd->add_flag("--quiet,-q", quiet,
                     "Do not print the progress and summary lines on standard error");
   run_cmd->footer(
@@ -206,7 +239,7 @@ int main(int argc, char** argv) {
 
   bool in_place = true;
   try {
-    return run(scene_path, overrides, out_path, quiet, in_place);
+    return run(scene_path, overrides, out_path, quiet, against == "exact", in_place);
   } catch (const impact::SceneError& e) {
     std::fprintf(stderr, "impact: error: %s\n", e.what());
     return kBadInput;

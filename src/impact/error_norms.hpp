@@ -23,28 +23,50 @@ struct ErrorNorms {
   RunSummary run;
 };
 
+// The error norms of one run as it streams: an observer for simulate() (call it with every step,
+// l = 0 first), then result() with the run's summary.
+class ErrorObserver {
+ public:
+  ErrorObserver(const Model& model, const State& initial, const Grid& grid)
+      : model_(model), grid_(grid), exact_(model, initial), previous_(initial) {}
+
+  void operator()(std::int64_t l, const State& s, const StepInfo& info) {
+    const State ref = exact_.at(grid_.t(l));
+    e_.sup_u = std::fmax(e_.sup_u, std::fabs(s.u - ref.u));
+    e_.l1_v += grid_.h * std::fabs(s.v - ref.v);
+    if (!seen_contact_ && l > 0 && info.contact_force > 0) {
+      seen_contact_ = true;
+      const double crossing =
+          previous_.v < 0 ? std::fmax(0.0, (previous_.u - model_.phi) / -previous_.v) : 0.0;
+      if (auto t1 = exact_.impact_time(1)) e_.first_impact = grid_.t(l - 1) + crossing - *t1;
+    }
+    previous_ = s;
+  }
+
+  // The norms once the run has ended, with its summary.
+  ErrorNorms result(const RunSummary& run) const {
+    ErrorNorms e = e_;
+    e.energy_end =
+        std::fabs(energy(model_, previous_) - energy(model_, exact_.at(grid_.t(grid_.steps))));
+    e.run = run;
+    return e;
+  }
+
+ private:
+  Model model_;
+  Grid grid_;
+  ExactSolution exact_;
+  State previous_;
+  bool seen_contact_ = false;
+  ErrorNorms e_;
+};
+
 template <class Stepper>
 ErrorNorms measure_errors(Stepper& stepper, const Model& model, const State& initial,
                           const Grid& grid) {
-  const ExactSolution exact(model, initial);
-  ErrorNorms e;
-  State previous = initial;
-  bool seen_contact = false;
-  e.run =
-      simulate(stepper, initial, grid, [&](std::int64_t l, const State& s, const StepInfo& info) {
-        const State ref = exact.at(grid.t(l));
-        e.sup_u = std::fmax(e.sup_u, std::fabs(s.u - ref.u));
-        e.l1_v += grid.h * std::fabs(s.v - ref.v);
-        if (!seen_contact && l > 0 && info.contact_force > 0) {
-          seen_contact = true;
-          const double crossing =
-              previous.v < 0 ? std::fmax(0.0, (previous.u - model.phi) / -previous.v) : 0.0;
-          if (auto t1 = exact.impact_time(1)) e.first_impact = grid.t(l - 1) + crossing - *t1;
-        }
-        previous = s;
-      });
-  e.energy_end = std::fabs(energy(model, previous) - energy(model, exact.at(grid.t(grid.steps))));
-  return e;
+  ErrorObserver errors(model, initial, grid);
+  const RunSummary run = simulate(stepper, initial, grid, errors);
+  return errors.result(run);
 }
 
 }  // namespace impact
