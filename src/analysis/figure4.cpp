@@ -261,6 +261,13 @@ std::string labels_gp(const Figure4Data& data, const toml::table& summary) {
          << "rest_no_cor_direct_paper = " << time_or_nan(data.readings.paper_rest) << '\n'
          << "rest_cor075_scaled_rebound = " << time_or_nan(data.readings.scaled_rebound.rest_time)
          << '\n'
+         << "late_closed_form = "
+         << *summary["ensemble"]["no_cor_direct_at_or_after_7_5"].value<std::int64_t>() << '\n'
+         << "late_paper = "
+         << *summary["ensemble"]["no_cor_direct_paper_at_or_after_7_5"].value<std::int64_t>()
+         << '\n'
+         << "bouncing_paper = "
+         << *summary["ensemble"]["no_cor_direct_paper_still_bouncing"].value<std::int64_t>() << '\n'
          << "contact_order = "
          << round_trip(*summary["contact_energy"]["cor1_change_order"].value<double>()) << '\n';
   return labels.str();
