@@ -69,8 +69,10 @@ TEST_CASE(
   CHECK(off_grid.energy_final / off_grid.energy_initial == Approx(1.0 / 9.0).epsilon(1e-9));
 }
 
-TEST_CASE("Figure 3 right: the impact with COR = 0.75 keeps COR^2 of the energy (E = 0.28125)",
-          "[figure3][claim]") {
+TEST_CASE(
+    "C8 (holds by construction of our reading v := -COR v^l): the impact with COR = 0.75 keeps "
+    "COR^2 of the energy (E = 0.28125)",
+    "[figure3][claim]") {
   // The paper: "energy is lost after the particle's impact, which can be shown theoretically".
   const Figure3Column& cor = column("cor075");
   CHECK(std::fabs(cor.direct.back().E - 0.75 * 0.75 * 0.5) <= 4 * kEps * 0.5);
@@ -80,8 +82,9 @@ TEST_CASE("Figure 3 right: the impact with COR = 0.75 keeps COR^2 of the energy 
 }
 
 TEST_CASE(
-    "Figure 3: COR leaves the contact force unchanged at the paper's h = 1e-3 and for any "
-    "impact in the first half of a step",
+    "C9 (holds by construction of our reading: N^l from the solve, COR on N^l > 0): COR leaves "
+    "the contact force unchanged at the paper's h = 1e-3 and for any impact in the first half "
+    "of a step",
     "[figure3][claim]") {
   // The paper: "The implementation of a coefficient of restitution has no effect on the results of
   // the contact force". Our reading keeps N^l and overwrites v on a step with N^l > 0

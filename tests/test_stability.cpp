@@ -288,8 +288,8 @@ TEST_CASE("stability: a failed step names the step, the time and the solver's re
 // ---- Claims ----
 
 TEST_CASE(
-    "stability: the COR law raises the energy when f > 0 (Section 5.2's 'energy is lost' "
-    "holds only for f <= 0)",
+    "C32 (reproduced for COR = 0.75): with COR = 1 and f > 0 the discrete COR rule raises E on "
+    "the contact step by f (u^l - phi), an artefact of the scheme",
     "[stability][claim][direct]") {
   // On the contact step the COR law sets v^{l+1} = -COR v^l at u^{l+1} = phi, so
   // E^{l+1} - E^l = -(1 - COR^2) (v^l)^2 / 2 + f (u^l - phi): with COR = 1 and an upward force the

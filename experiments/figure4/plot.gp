@@ -6,6 +6,9 @@
 # together. Titles give max_l |direct - fb_newton| and the rest times (labels.gp, exp_figure4).
 # Second figure, figure4_h_sweep: energy loss, mean energy, rest time and impact count over 121
 # step sizes 1e-5 <= h <= 1e-2, and the rest times of u0 moved by up to 200 ulps at h = 1e-3.
+# Third figure, figure4_readings: without COR, u(t) of direct with (5-1) in closed form and as
+# printed, and the rest-time distributions of both arithmetics over the ensemble; the energy
+# change of the contact step of a particle pushed away from the floor (f > 0) over h.
 # Usage: gnuplot -e "results='results/figure4'" experiments/figure4/plot.gp
 if (!exists("results")) results = 'results/figure4'
 load results.'/labels.gp'
@@ -199,5 +202,81 @@ do for [format in "png svg"] {
          title "fb_newton, no COR"
   unset multiplot
   unset arrow 9
+  set output
+}
+
+# The readings figure. Histogram of rest times in 0.1 s bins (a member still bouncing at T has no
+# rest time and is counted in the title).
+bin(t) = 0.1 * floor(t / 0.1) + 0.05
+rest_or_nan(name) = (column(name) == column(name)) ? bin(column(name)) : NaN
+set datafile missing "nan"
+
+do for [format in "png svg"] {
+  if (format eq "png") {
+    set terminal pngcairo size 1100,1300 font ",10"
+    set output 'figures/figure4_readings.png'
+  } else {
+    set terminal svg size 1100,1300 font ",10" dynamic
+    set output 'figures/figure4_readings.svg'
+  }
+  unset logscale
+  set format x "%g"
+  set format y "%g"
+  set xtics auto
+  set multiplot layout 3,1 title \
+      "Figure 4 without COR (h = 10^{-3} s): the rest time depends on how (5-1) is rounded"
+  set grid
+  set key outside right top vertical box opaque noenhanced
+  set datafile columnheaders
+
+  set title sprintf("(a) u(t), direct: closed form rests at %.3f s, (5-1) as printed at %.3f s", \
+                    rest_no_cor_direct, rest_no_cor_direct_paper)
+  set xrange [0:10]
+  set xlabel "t [s]"
+  set ylabel "u(t) [m]"
+  set yrange [-0.3:7]
+  set arrow 1 from rest_no_cor_direct, graph 0 to rest_no_cor_direct, graph 1 nohead dt 3 \
+      lc rgb blue
+  set arrow 2 from rest_no_cor_direct_paper, graph 0 to rest_no_cor_direct_paper, graph 1 nohead \
+      dt 3 lc rgb orange
+  plot csv('no_cor', 'direct') using 1:2 with lines lw 3 lc rgb blue title "closed form", \
+       csv('no_cor', 'direct_paper') using 1:2 with lines lw 2 dt 2 lc rgb orange \
+         title "as printed", \
+       csv('no_cor', 'exact') using 1:2 with lines lw 1 lc rgb "black" title "exact (elastic)"
+  unset arrow 1
+  unset arrow 2
+
+  set title sprintf("(b) rest times of 401 runs with u0 moved by <= 200 ulps\nat >= 7.5 s or still bouncing at T = 10 s: closed form %d, as printed %d (%d bouncing)", \
+                    late_closed_form, late_paper, bouncing_paper)
+  set xrange [5:10]
+  set xlabel "rest time [s] (0.1 s bins)"
+  set ylabel "runs"
+  set yrange [0:*]
+  set style fill transparent solid 0.5 noborder
+  set boxwidth 0.1
+  set arrow 3 from 7.5, graph 0 to 7.5, graph 1 nohead dt 2 lw 2 lc rgb "black"
+  plot ensemble using (rest_or_nan("no_cor_direct")):(1) smooth frequency with boxes \
+         lc rgb blue title "closed form", \
+       ensemble using (rest_or_nan("no_cor_direct_paper")):(1) smooth frequency with boxes \
+         lc rgb orange title "as printed", \
+       NaN with lines dt 2 lw 2 lc rgb "black" title "paper: 'around t = 7.5'"
+  unset arrow 3
+  set style fill empty
+
+  set title sprintf("(c) energy change of the contact step, u_0 = 0.01 m, v_0 = -1 m/s, f = +9.80665 m/s^2 (fitted order of the rise %.2f)", contact_order)
+  set logscale xy
+  set xrange [1e-5:1e-2]
+  set yrange [1e-7:1]
+  set format x "10^{%L}"
+  set format y "10^{%L}"
+  set xlabel "h [s]"
+  set ylabel "|E^{l+1} - E^l| [J/kg]"
+  contact = results.'/contact_energy.csv'
+  plot contact using 1:(col("cor1_change")) with linespoints pt 7 lc rgb "#D55E00" \
+         title "COR = 1: rise", \
+       contact using 1:(-col("cor075_change")) with linespoints pt 6 lc rgb green \
+         title "COR = 0.75: fall", \
+       9.80665 * x with lines dt 2 lc rgb "black" title "f h (bound of the rise)"
+  unset multiplot
   set output
 }

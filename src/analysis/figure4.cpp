@@ -229,12 +229,13 @@ std::string sweep_csv(const Figure4Data& data) {
 
 std::string ensemble_csv(const Figure4Data& data) {
   std::ostringstream csv;
-  csv << "k,u0,no_cor_direct,no_cor_fb_newton,cor075_direct,cor075_fb_newton\n";
+  csv << "k,u0,no_cor_direct,no_cor_fb_newton,cor075_direct,cor075_fb_newton,"
+         "no_cor_direct_paper\n";
   for (std::size_t i = 0; i < data.ensemble_u0.size(); ++i) {
     csv << static_cast<int>(i) - kEnsembleUlps << ',' << round_trip(data.ensemble_u0[i]);
     for (const auto& scene : data.ensemble_rest)
       for (const auto& rest : scene) csv << ',' << time_or_nan(rest[i]);
-    csv << '\n';
+    csv << ',' << time_or_nan(data.readings.paper_ensemble[i]) << '\n';
   }
   return csv.str();
 }
@@ -256,8 +257,19 @@ std::string labels_gp(const Figure4Data& data, const toml::table& summary) {
   labels << "zeno = " << round_trip(*summary["cor075"]["exact_rest_time"].value<double>()) << '\n'
          << "energy0 = " << round_trip(energy(no_cor.model, no_cor.initial)) << '\n'
          << "order_direct = "
-         << round_trip(*summary["h_sweep"]["cor075_direct_rest_time_order"].value<double>())
-         << '\n';
+         << round_trip(*summary["h_sweep"]["cor075_direct_rest_time_order"].value<double>()) << '\n'
+         << "rest_no_cor_direct_paper = " << time_or_nan(data.readings.paper_rest) << '\n'
+         << "rest_cor075_scaled_rebound = " << time_or_nan(data.readings.scaled_rebound.rest_time)
+         << '\n'
+         << "late_closed_form = "
+         << *summary["ensemble"]["no_cor_direct_at_or_after_7_5"].value<std::int64_t>() << '\n'
+         << "late_paper = "
+         << *summary["ensemble"]["no_cor_direct_paper_at_or_after_7_5"].value<std::int64_t>()
+         << '\n'
+         << "bouncing_paper = "
+         << *summary["ensemble"]["no_cor_direct_paper_still_bouncing"].value<std::int64_t>() << '\n'
+         << "contact_order = "
+         << round_trip(*summary["contact_energy"]["cor1_change_order"].value<double>()) << '\n';
   return labels.str();
 }
 
@@ -277,6 +289,7 @@ Figure4Data figure4_data(const ExperimentContext& context, const Figure4Options&
   data.sweep_per_decade = options.sweep_per_decade;
   data.sweep = sweep(table, options.sweep_per_decade);
   ensemble(table, data);
+  data.readings = figure4_readings(table[0][0], table[1][0], data.ensemble_u0);
   return data;
 }
 
@@ -288,7 +301,9 @@ toml::table run_figure4(const ExperimentContext& context, const Figure4Options& 
   const double zeno = *summary["cor075"]["exact_rest_time"].value<double>();
   summary.insert("h_sweep", sweep_summary(data, zeno));
   summary.insert("ensemble", ensemble_summary(data));
+  add_readings_summary(data.readings, summary);
   context.write("h_sweep.csv", [&] { return sweep_csv(data); });
+  context.write("contact_energy.csv", [&] { return contact_energy_csv(data.readings); });
   context.write("ensemble.csv", [&] { return ensemble_csv(data); });
   context.write("labels.gp", [&] { return labels_gp(data, summary); });
   return summary;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "analysis/experiment.hpp"
+#include "analysis/figure4_readings.hpp"
 #include "analysis/rest.hpp"
 #include "impact/scene.hpp"
 
@@ -48,6 +49,9 @@ struct Figure4Data {
   // still bounces at T).
   std::vector<double> ensemble_u0;
   std::vector<std::optional<double>> ensemble_rest[2][2];  // [scene][method]
+  // The same runs in the alternative arithmetic or reading, and C32's contact step
+  // (figure4_readings.hpp).
+  Figure4Readings readings;
 };
 
 Figure4Data figure4_data(const ExperimentContext& context, const Figure4Options& options = {});
@@ -56,7 +60,7 @@ Figure4Data figure4_data(const ExperimentContext& context, const Figure4Options&
 double first_impact_loss(const RestAnalysis& analysis);
 
 // The key numbers of figure4_data (reference.toml's keys), and the files plot.gp reads besides the
-// trajectories: h_sweep.csv, ensemble.csv and labels.gp (the numbers in titles and keys).
+// trajectories: h_sweep.csv, ensemble.csv, contact_energy.csv and labels.gp (the numbers in titles and keys).
 toml::table run_figure4(const ExperimentContext& context, const Figure4Options& options = {});
 
 extern const Experiment kFigure4Experiment;
