@@ -1,4 +1,4 @@
-// Numerical stability (issue 5, experiments/stability): property tests on seeded random scenes
+// Numerical stability (experiments/stability): property tests on seeded random scenes
 // across the extreme ranges (h from 1e-9 to 1, |v0| and |f| up to 1e8, f > 0, starting on the
 // floor, COR 0..1, a floor at 1e6, eps from 1e-15 to 1e-2, c_N from 1e2 to 1e9), the safeguards'
 // regression cases, the claims the experiment checks, and its key numbers against reference.toml.
@@ -105,7 +105,7 @@ Catch::Generators::GeneratorWrapper<RandomScene> random_scenes(std::uint64_t see
       std::unique_ptr<Catch::Generators::IGenerator<RandomScene>>(new RandomScenes(seed, count)));
 }
 
-// What a run did, step by step, against the properties of issue 5.
+// What a run did, step by step, against the stability properties (experiments/stability/README.md).
 struct Properties {
   bool finite = true;
   double min_gap = std::numeric_limits<double>::infinity();

@@ -1,4 +1,4 @@
-// Throughput of the solvers (issue 4), with Google Benchmark. CPU time of the solve alone, output
+// Throughput of the solvers, with Google Benchmark. CPU time of the solve alone, output
 // off, after a warm-up, repeated; the minimum and the median over the repetitions are reported.
 //   stepper/<method>/<scene>   ns per step through simulate() (as `impact run` calls it), for
 //                              direct, moreau_jean, fb_newton, penalty (per grid step and per ODE
@@ -289,7 +289,7 @@ void write_results(const std::string& dir, const Collector& collector) {
   std::ofstream(dir + "/summary.toml") << summary << "\n";
 
   // For plot.gp: ns per step in-process and through `impact run` (1e8 steps, 1e7 for
-  // fb_newton) with the issue's targets, and the ensemble's throughput.
+  // fb_newton) with the package's targets, and the ensemble's throughput.
   const auto best = [&](const std::string& name, double scale) {
     const auto it = collector.results().find(name);
     if (it == collector.results().end()) return std::nan("");

@@ -1,4 +1,4 @@
-# Numerical stability on stiff and extreme cases (issue 5): every method over h = 1e-9..1 on the
+# Numerical stability on stiff and extreme cases: every method over h = 1e-9..1 on the
 # extreme cases, fb_newton over its smoothing parameter, penalty over c_N and its GSL steppers.
 # The driver also rewrites the table in experiments/stability/README.md (between its markers).
 EXPERIMENTS += stability

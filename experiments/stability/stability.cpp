@@ -1,4 +1,4 @@
-// Numerical stability on stiff and extreme cases (issue 5): every method driven to its limits.
+// Numerical stability on stiff and extreme cases: every method driven to its limits.
 //
 // Usage: exp_stability RESULTS_DIR [README]
 // With README (experiments/stability/README.md), replaces its text between the lines

@@ -1,4 +1,4 @@
-// Work-precision study (issue 4): for every method on the paper's Figure 3 and Figure 4 scenes
+// Work-precision study: for every method on the paper's Figure 3 and Figure 4 scenes
 // (no COR and COR = 0.75) and on a scene whose impact lies on no grid point, the error against
 // `exact` and the CPU time of the solve, over a sweep of the step h (direct, fb_newton,
 // moreau_jean, Siconos when it was built) or of the tolerance (penalty, several c_N, an explicit

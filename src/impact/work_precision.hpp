@@ -1,4 +1,4 @@
-// Work against precision (issue 4): the error of a solver against the exact solution and the CPU
+// Work against precision: the error of a solver against the exact solution and the CPU
 // time of its solve, for a sweep of the step h (the time-steppers) or of the tolerance (penalty),
 // as DifferentialEquations.jl's work-precision sets do it: the solve alone is timed (the stepper is
 // built before the clock starts, output is off), after a warm-up, repeated; the minimum and the
@@ -46,7 +46,7 @@ struct TimingRule {
 template <class Make>
 SolveCost time_solve(Make&& make, const State& initial, const Grid& grid, const TimingRule& rule);
 
-// The four error measures of issue 4, as measure_errors() computes them.
+// The four error measures of the work-precision study, as measure_errors() computes them.
 enum class ErrorMeasure { sup_u, l1_v, energy_end, first_impact };
 inline constexpr ErrorMeasure kErrorMeasures[] = {
     ErrorMeasure::sup_u, ErrorMeasure::l1_v, ErrorMeasure::energy_end, ErrorMeasure::first_impact};
