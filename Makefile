@@ -9,10 +9,17 @@ endif
 IMPACT := $(BUILD)/impact
 RESULTS := results
 
+# `make all` prints one line per step; the sub-makes say nothing about directories.
+MAKEFLAGS += --no-print-directory
+
+# Shell code: the seconds since $$start (start=$$(date +%s%N)), to one decimal.
+SECONDS_SINCE = ms=$$(( ($$(date +%s%N) - start) / 1000000 )); printf '%d.%d' $$((ms / 1000)) $$((ms % 1000 / 100))
+
 EXPERIMENTS :=
 include $(wildcard experiments/*/experiment.mk)
 
-.PHONY: all deps configure build tools test clean experiments claims help $(EXPERIMENTS) $(EXPERIMENTS:%=run-%)
+.PHONY: all deps configure build tools test clean experiments claims help $(EXPERIMENTS) \
+  $(EXPERIMENTS:%=run-%) $(EXPERIMENTS:%=outputs-%)
 .DEFAULT_GOAL := help
 
 help:
@@ -27,8 +34,9 @@ help:
 	@echo "make fuzz         fuzz the scene reader and --set for $(FUZZ_SECONDS) s (clang); fuzz-long: 30 min"
 	@echo "make determinism  check that an -O0 build writes the same bytes as $(BUILD)/"
 
-all: tools
-	@$(MAKE) --no-print-directory experiments
+all:
+	@start=$$(date +%s%N); $(MAKE) tools && $(MAKE) experiments && \
+	  echo "all: build and $(words $(EXPERIMENTS)) experiments in $$($(SECONDS_SINCE)) s"
 
 deps:
 	@bash .ci/deps.sh
@@ -40,8 +48,12 @@ build: configure
 	@cmake --build $(BUILD) -j $(JOBS)
 
 # What the experiments run (the CLI, the claims tool, the drivers), without the test suite.
+# Its compiler output goes to $(BUILD).build.log, shown when the build fails.
 tools: configure
-	@cmake --build $(BUILD) -j $(JOBS) --target impact_experiments
+	@start=$$(date +%s%N); \
+	cmake --build $(BUILD) -j $(JOBS) --target impact_experiments > $(BUILD).build.log 2>&1 || \
+	  { cat $(BUILD).build.log; echo "build: failed (log: $(BUILD).build.log)"; exit 1; }; \
+	echo "build: done in $$($(SECONDS_SINCE)) s"
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
@@ -51,10 +63,21 @@ test: build
 experiments: $(EXPERIMENTS:%=run-%)
 
 $(EXPERIMENTS): tools
-	@$(MAKE) --no-print-directory run-$@
+	@$(MAKE) run-$@
+
+# One line per experiment. What its commands print goes to results/<name>/make.log, which is shown
+# when one of them fails.
+$(EXPERIMENTS:%=run-%): run-%:
+	@start=$$(date +%s%N); \
+	if $(MAKE) -q outputs-$* 2>/dev/null; then echo "$*: up to date"; else \
+	  mkdir -p $(RESULTS)/$*; \
+	  if $(MAKE) outputs-$* > $(RESULTS)/$*/make.log 2>&1; then \
+	    echo "$*: done in $$($(SECONDS_SINCE)) s"; \
+	  else cat $(RESULTS)/$*/make.log; echo "$*: failed (log: $(RESULTS)/$*/make.log)"; exit 1; fi; \
+	fi
 
 .SECONDEXPANSION:
-$(EXPERIMENTS:%=run-%): run-%: $$($$*_OUTPUTS)
+$(EXPERIMENTS:%=outputs-%): outputs-%: $$($$*_OUTPUTS)
 
 # The claims ledger's verdict table with the numbers of the latest results.
 claims: tools
@@ -91,7 +114,7 @@ fuzz:
 	  $(FUZZ_BUILD)/corpus $(FUZZ_BUILD)/seeds
 
 fuzz-long:
-	@$(MAKE) --no-print-directory fuzz FUZZ_SECONDS=1800
+	@$(MAKE) fuzz FUZZ_SECONDS=1800
 
 determinism: build
 	@cmake -S . -B $(O0_BUILD) $(CMAKE_FLAGS) -DCMAKE_BUILD_TYPE=Debug -DIMPACT_BUILD_TESTS=OFF \
