@@ -12,6 +12,14 @@ RESULTS := results
 # `make all` prints one line per step; the sub-makes say nothing about directories.
 MAKEFLAGS += --no-print-directory
 
+# Figures are byte-reproducible, so that `make all` leaves the committed ones unchanged. pdfcairo
+# writes the time of the run into a PDF's /CreationDate, and the cairo of Debian 12 (1.16) ignores
+# SOURCE_DATE_EPOCH, so $(call FIX_PDF_DATE,file.pdf) overwrites that date with SOURCE_DATE_EPOCH's,
+# padded to the same length so that the PDF's cross-reference offsets stay valid.
+export SOURCE_DATE_EPOCH := 0
+PDF_DATE := $(shell date -u -d @$(SOURCE_DATE_EPOCH) +%Y%m%d%H%M%S)
+FIX_PDF_DATE = perl -0777 -pi -e 's{/CreationDate \(D:[^)]*\)}{my $$d = "/CreationDate (D:$(PDF_DATE)Z)"; $$d . " " x (length($$&) - length($$d))}ge' $(1)
+
 # Shell code: the seconds since $$start (start=$$(date +%s%N)), to one decimal.
 SECONDS_SINCE = ms=$$(( ($$(date +%s%N) - start) / 1000000 )); printf '%d.%d' $$((ms / 1000)) $$((ms % 1000 / 100))
 

@@ -12,3 +12,4 @@ $(figure4_OUTPUTS) &: experiments/figure4/plot.gp $(figure4_SCENES) $(IMPACT) $(
 	    --out $(RESULTS)/figure4/$${scene}_$$method.csv || exit 1; done; done
 	$(figure4_DRIVER) experiments/figure4 $(RESULTS)/figure4
 	gnuplot -e "results='$(RESULTS)/figure4'" experiments/figure4/plot.gp
+	$(call FIX_PDF_DATE,figures/figure4.pdf)
