@@ -23,10 +23,18 @@ FIX_PDF_DATE = perl -0777 -pi -e 's{/CreationDate \(D:[^)]*\)}{my $$d = "/Creati
 # Shell code: the seconds since $$start (start=$$(date +%s%N)), to one decimal.
 SECONDS_SINCE = ms=$$(( ($$(date +%s%N) - start) / 1000000 )); printf '%d.%d' $$((ms / 1000)) $$((ms % 1000 / 100))
 
+# Figures that show this machine's CPU or wall time differ from run to run. Their experiments
+# write them to $(TIMING_DIR), so that `make all` leaves the committed copies in figures/ alone;
+# `make refresh-timing-figures` measures again and copies them over. Each experiment.mk adds the
+# names of its timing figures to TIMING_FIGURES.
+TIMING_DIR := $(RESULTS)/figures
+TIMING_FIGURES :=
+
 EXPERIMENTS :=
 include $(wildcard experiments/*/experiment.mk)
 
-.PHONY: all deps configure build tools test clean experiments claims help $(EXPERIMENTS) \
+.PHONY: all deps configure build tools test clean experiments claims help refresh-timing-figures \
+  $(EXPERIMENTS) \
   $(EXPERIMENTS:%=run-%) $(EXPERIMENTS:%=outputs-%)
 .DEFAULT_GOAL := help
 
@@ -37,6 +45,8 @@ help:
 	@echo "make claims       print the claims ledger's verdicts with the latest measured numbers"
 	@echo "make build        configure and build everything, tests included"
 	@echo "make performance  Google Benchmark throughput (ns per step) and the ensemble; not in all"
+	@echo "make refresh-timing-figures  measure again and update the committed timing figures:"
+	@echo "                  $(TIMING_FIGURES)"
 	@echo "make clean        remove $(BUILD)/ and $(RESULTS)/"
 	@echo "make asan-test    the test suite under AddressSanitizer + UBSan, in $(ASAN_BUILD)/"
 	@echo "make fuzz         fuzz the scene reader and --set for $(FUZZ_SECONDS) s (clang); fuzz-long: 30 min"
@@ -86,6 +96,12 @@ $(EXPERIMENTS:%=run-%): run-%:
 
 .SECONDEXPANSION:
 $(EXPERIMENTS:%=outputs-%): outputs-%: $$($$*_OUTPUTS)
+
+# The timing figures' experiments (performance included: ~3 minutes of benchmarks), then their
+# figures copied from $(TIMING_DIR) to figures/, to be committed.
+refresh-timing-figures: work_precision stability performance
+	@cp $(addprefix $(TIMING_DIR)/,$(TIMING_FIGURES)) figures/
+	@echo "refresh-timing-figures: $(words $(TIMING_FIGURES)) files copied to figures/"
 
 # The claims ledger's verdict table with the numbers of the latest results.
 claims: tools

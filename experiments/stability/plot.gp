@@ -2,10 +2,15 @@
 #   figures/stability_map.*     method x case x h: the outcome of each run (colour key below)
 #   figures/stability_params.*  fb_newton: epsilon x h; penalty: stepper x c_N and c_N x h
 #   figures/stability_stiff.*   penalty as c_N grows: penetration, contact duration, impulse,
-#                               error against exact, energy drift, ODE steps, run time
+#                               error against exact, energy drift, ODE steps
+#   <timing>/stability_stiff_time.*  penalty as c_N grows: wall time of each GSL stepper. It
+#                               differs from run to run, so it goes to `timing` (results/figures;
+#                               `make refresh-timing-figures` copies it to figures/)
 # Units: SI as in the paper (f = -9.80665 m/s^2); N and c_N are per unit mass, so c_N is in s^-2.
-# Usage: gnuplot -e "results='results/stability'" experiments/stability/plot.gp
+# Usage: gnuplot -e "results='results/stability'; timing='results/figures'" \
+#          experiments/stability/plot.gp
 if (!exists("results")) results = 'results/stability'
+if (!exists("timing")) timing = 'results/figures'
 load results.'/labels.gp'
 
 # Outcome colours (the Outcome codes of src/impact/stability.hpp).
@@ -196,16 +201,33 @@ do for [format in "png svg"] {
            with linespoints pt 7 ps 0.8 lc rgb stepper_colour[i] title word(steppers, i), \
        1e5 with lines dt 3 lc rgb "black" title "budget"
 
-  set title "run time, resting contact (T = 0.1 s)"
-  set ylabel "wall time [s]"
-  plot for [i = 1:7] stiff using 3:(pick(word(steppers, i), "rest", finished($15) ? $25 : NaN)) \
-           with linespoints pt 7 ps 0.8 lc rgb stepper_colour[i] title word(steppers, i)
-
   set title "resting contact: penetration max({/Symbol f} - u) against 2 |f| / c_N"
   set key bottom left
   set ylabel "max({/Symbol f} - u) [m]"
   plot for [i = 1:7] stiff using 3:(pick(word(steppers, i), "rest", finished($15) ? -$16 : NaN)) \
            with points pt 7 ps 0.8 lc rgb stepper_colour[i] title word(steppers, i), \
        2 * 9.80665 / x with lines dt 2 lc rgb "black" title "2 |f| / c_N"
+  unset multiplot
+
+  # ---- Figure 4: what the stiff runs cost in time on this machine ----
+  if (format eq "png") {
+    set terminal pngcairo size 1200,500 font ",10"
+    set output timing.'/stability_stiff_time.png'
+  } else {
+    set terminal svg size 1200,500 font ",10" dynamic
+    set output timing.'/stability_stiff_time.svg'
+  }
+  set multiplot layout 1,2 title \
+      "Normal compliance, resting contact (T = 0.1 s, h = 10^{-3} s): wall time per GSL stepper on this machine"
+  set key top left
+  set title "run time"
+  set ylabel "wall time [s]"
+  plot for [i = 1:7] stiff using 3:(pick(word(steppers, i), "rest", finished($15) ? $25 : NaN)) \
+           with linespoints pt 7 ps 0.8 lc rgb stepper_colour[i] title word(steppers, i)
+  set title "time per accepted ODE step (colours as on the left)"
+  set ylabel "wall time / ODE steps [s]"
+  unset key
+  plot for [i = 1:7] stiff using 3:(pick(word(steppers, i), "rest", finished($15) ? $25 / $21 : NaN)) \
+           with linespoints pt 7 ps 0.8 lc rgb stepper_colour[i] title word(steppers, i)
   unset multiplot
 }

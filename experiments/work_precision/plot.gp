@@ -1,11 +1,15 @@
-# Work-precision diagrams. Reads results/work_precision/ (exp_work_precision), writes
-#   figures/work_precision.{png,svg}          the main diagram: sup |u_h - u| against CPU time on
-#                                             each scene, and the mechanism of direct's stall
-#   figures/work_precision_<scene>.{png,svg}  every error measure against CPU time (top row) and
-#                                             against h (bottom row, the time-steppers)
+# Work-precision diagrams. Reads results/work_precision/ (exp_work_precision), writes to `out`
+# (results/figures: CPU times differ from run to run, so `make refresh-timing-figures` copies them
+# to figures/):
+#   work_precision.{png,svg}          the main diagram: sup |u_h - u| against CPU time on each
+#                                     scene, and the mechanism of direct's stall
+#   work_precision_<scene>.{png,svg}  every error measure against CPU time (top row) and against h
+#                                     (bottom row, the time-steppers)
 # Errors below 1e-16 (rounding, or an exactly reproduced quantity) are drawn at 1e-16.
-# Usage: gnuplot -e "results='results/work_precision'" experiments/work_precision/plot.gp
+# Usage: gnuplot -e "results='results/work_precision'; out='results/figures'" \
+#          experiments/work_precision/plot.gp
 if (!exists("results")) results = 'results/work_precision'
+if (!exists("out")) out = 'results/figures'
 load results.'/curves.gp'
 set datafile separator ','
 
@@ -39,10 +43,10 @@ do for [format in "png svg"] {
   # --- the main diagram ---
   if (format eq "png") {
     set terminal pngcairo size 1500,950 font ",10"
-    set output 'figures/work_precision.png'
+    set output out.'/work_precision.png'
   } else {
     set terminal svg size 1500,950 font ",10" dynamic
-    set output 'figures/work_precision.svg'
+    set output out.'/work_precision.svg'
   }
   set multiplot layout 2,3 title "Work against precision: sup-norm error of u against CPU time of the solve (T = 10 s, minimum over repetitions)"
   set xlabel "CPU time of the solve [s]"
@@ -79,10 +83,10 @@ do for [format in "png svg"] {
   do for [scene in scenes] {
     if (format eq "png") {
       set terminal pngcairo size 1900,900 font ",10"
-      set output 'figures/work_precision_'.scene.'.png'
+      set output out.'/work_precision_'.scene.'.png'
     } else {
       set terminal svg size 1900,900 font ",10" dynamic
-      set output 'figures/work_precision_'.scene.'.svg'
+      set output out.'/work_precision_'.scene.'.svg'
     }
     set multiplot layout 2,4 title "Work against precision, ".value('title_'.scene)." (T = 10 s)"
     set yrange [1e-16:*]
