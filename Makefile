@@ -9,10 +9,33 @@ endif
 IMPACT := $(BUILD)/impact
 RESULTS := results
 
+# `make all` prints one line per step; the sub-makes say nothing about directories.
+MAKEFLAGS += --no-print-directory
+
+# Figures are byte-reproducible, so that `make all` leaves the committed ones unchanged. pdfcairo
+# writes the time of the run into a PDF's /CreationDate, and the cairo of Debian 12 (1.16) ignores
+# SOURCE_DATE_EPOCH, so $(call FIX_PDF_DATE,file.pdf) overwrites that date with SOURCE_DATE_EPOCH's,
+# padded to the same length so that the PDF's cross-reference offsets stay valid.
+export SOURCE_DATE_EPOCH := 0
+PDF_DATE := $(shell date -u -d @$(SOURCE_DATE_EPOCH) +%Y%m%d%H%M%S)
+FIX_PDF_DATE = perl -0777 -pi -e 's{/CreationDate \(D:[^)]*\)}{my $$d = "/CreationDate (D:$(PDF_DATE)Z)"; $$d . " " x (length($$&) - length($$d))}ge' $(1)
+
+# Shell code: the seconds since $$start (start=$$(date +%s%N)), to one decimal.
+SECONDS_SINCE = ms=$$(( ($$(date +%s%N) - start) / 1000000 )); printf '%d.%d' $$((ms / 1000)) $$((ms % 1000 / 100))
+
+# Figures that show this machine's CPU or wall time differ from run to run. Their experiments
+# write them to $(TIMING_DIR), so that `make all` leaves the committed copies in figures/ alone;
+# `make refresh-timing-figures` measures again and copies them over. Each experiment.mk adds the
+# names of its timing figures to TIMING_FIGURES.
+TIMING_DIR := $(RESULTS)/figures
+TIMING_FIGURES :=
+
 EXPERIMENTS :=
 include $(wildcard experiments/*/experiment.mk)
 
-.PHONY: all deps configure build tools test clean experiments claims help $(EXPERIMENTS) $(EXPERIMENTS:%=run-%)
+.PHONY: all deps configure build tools test clean experiments claims help refresh-timing-figures \
+  $(EXPERIMENTS) \
+  $(EXPERIMENTS:%=run-%) $(EXPERIMENTS:%=outputs-%)
 .DEFAULT_GOAL := help
 
 help:
@@ -22,14 +45,17 @@ help:
 	@echo "make claims       print the claims ledger's verdicts with the latest measured numbers"
 	@echo "make build        configure and build everything, tests included"
 	@echo "make performance  Google Benchmark throughput (ns per step) and the ensemble; not in all"
+	@echo "make refresh-timing-figures  measure again and update the committed timing figures:"
+	@echo "                  $(sort $(basename $(TIMING_FIGURES)))"
 	@echo "make clean        remove $(BUILD)/ and $(RESULTS)/"
 	@echo "make asan-test    the test suite under AddressSanitizer + UBSan, in $(ASAN_BUILD)/"
 	@echo "make fuzz         fuzz the scene reader and --set for $(FUZZ_SECONDS) s (clang); fuzz-long: 30 min"
 	@echo "make determinism  check that an -O0 build writes the same bytes as $(BUILD)/"
 	@echo "make odr-check    link the library with -flto into one shared object: fails on an ODR violation"
 
-all: tools
-	@$(MAKE) --no-print-directory experiments
+all:
+	@start=$$(date +%s%N); $(MAKE) tools && $(MAKE) experiments && \
+	  echo "all: build and $(words $(EXPERIMENTS)) experiments in $$($(SECONDS_SINCE)) s"
 
 deps:
 	@bash .ci/deps.sh
@@ -41,8 +67,12 @@ build: configure
 	@cmake --build $(BUILD) -j $(JOBS)
 
 # What the experiments run (the CLI, the claims tool, the drivers), without the test suite.
+# Its compiler output goes to $(BUILD).build.log, shown when the build fails.
 tools: configure
-	@cmake --build $(BUILD) -j $(JOBS) --target impact_experiments
+	@start=$$(date +%s%N); \
+	cmake --build $(BUILD) -j $(JOBS) --target impact_experiments > $(BUILD).build.log 2>&1 || \
+	  { cat $(BUILD).build.log; echo "build: failed (log: $(BUILD).build.log)"; exit 1; }; \
+	echo "build: done in $$($(SECONDS_SINCE)) s"
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
@@ -52,10 +82,30 @@ test: build
 experiments: $(EXPERIMENTS:%=run-%)
 
 $(EXPERIMENTS): tools
-	@$(MAKE) --no-print-directory run-$@
+	@$(MAKE) run-$@
+
+# One line per experiment. What its commands print goes to results/<name>/make.log, which is shown
+# when one of them fails.
+$(EXPERIMENTS:%=run-%): run-%:
+	@start=$$(date +%s%N); \
+	if $(MAKE) -q outputs-$* 2>/dev/null; then echo "$*: up to date"; else \
+	  mkdir -p $(RESULTS)/$*; \
+	  if $(MAKE) outputs-$* > $(RESULTS)/$*/make.log 2>&1; then \
+	    echo "$*: done in $$($(SECONDS_SINCE)) s"; \
+	  else cat $(RESULTS)/$*/make.log; echo "$*: failed (log: $(RESULTS)/$*/make.log)"; exit 1; fi; \
+	fi
 
 .SECONDEXPANSION:
-$(EXPERIMENTS:%=run-%): run-%: $$($$*_OUTPUTS)
+$(EXPERIMENTS:%=outputs-%): outputs-%: $$($$*_OUTPUTS)
+
+# The timing figures' experiments run again (performance included: ~3 minutes of benchmarks),
+# whether or not their inputs changed, then their figures are copied from $(TIMING_DIR) to
+# figures/, to be committed.
+refresh-timing-figures:
+	@rm -f $(addprefix $(TIMING_DIR)/,$(TIMING_FIGURES))
+	@$(MAKE) work_precision stability performance
+	@cp $(addprefix $(TIMING_DIR)/,$(TIMING_FIGURES)) figures/
+	@echo "refresh-timing-figures: $(words $(TIMING_FIGURES)) files copied to figures/"
 
 # The claims ledger's verdict table with the numbers of the latest results.
 claims: tools
@@ -102,7 +152,7 @@ fuzz:
 	  $(FUZZ_BUILD)/corpus $(FUZZ_BUILD)/seeds
 
 fuzz-long:
-	@$(MAKE) --no-print-directory fuzz FUZZ_SECONDS=1800
+	@$(MAKE) fuzz FUZZ_SECONDS=1800
 
 determinism: build
 	@cmake -S . -B $(O0_BUILD) $(CMAKE_FLAGS) -DCMAKE_BUILD_TYPE=Debug -DIMPACT_BUILD_TESTS=OFF \

@@ -12,3 +12,4 @@ $(figure3_OUTPUTS) &: experiments/figure3/plot.gp $(figure3_SCENES) $(IMPACT) $(
 	    --out $(RESULTS)/figure3/$${scene}_$$method.csv || exit 1; done; done
 	$(figure3_DRIVER) $(RESULTS)/figure3
 	gnuplot -e "results='$(RESULTS)/figure3'" experiments/figure3/plot.gp
+	$(call FIX_PDF_DATE,figures/figure3.pdf)

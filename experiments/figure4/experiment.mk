@@ -16,3 +16,4 @@ $(figure4_OUTPUTS) &: experiments/figure4/plot.gp $(figure4_SCENES) $(IMPACT) $(
 	  --out $(RESULTS)/figure4/no_cor_direct_paper.csv
 	$(figure4_DRIVER) $(RESULTS)/figure4
 	gnuplot -e "results='$(RESULTS)/figure4'" experiments/figure4/plot.gp
+	$(call FIX_PDF_DATE,figures/figure4.pdf)

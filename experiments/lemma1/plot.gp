@@ -12,8 +12,13 @@ exact_cases = "exact_f0_elastic exact_f0_cor075 exact_gravity_elastic exact_grav
 exact_titles = "'f = 0, elastic' 'f = 0, COR 0.75' 'f = -9.80665, elastic' 'f = -9.80665, COR 0.75' 'f = -9.80665, plastic (COR 0)'"
 scheme_cases = "direct_f0_no_cor direct_f0_no_cor_h0012 direct_f0_cor075 direct_gravity_no_cor direct_gravity_cor075"
 scheme_titles = "'f = 0, no COR' 'f = 0, no COR, h = 0.0012' 'f = 0, COR 0.75' 'f = -9.80665, no COR' 'f = -9.80665, COR 0.75'"
-colors = "#1b9e77 #d95f02 #7570b3 #e7298a #66a61e"
-dashes(i) = i == 1 ? 1 : (i == 3 ? 2 : 1)
+# One colour per scene, the same in both columns (the exact solution's "elastic" is the scheme's
+# "no COR"); the plastic scene has no scheme run, the h = 0.0012 run no exact one.
+exact_colors = "#1b9e77 #d95f02 #7570b3 #e7298a #66a61e"
+scheme_colors = "#1b9e77 #e6ab02 #d95f02 #7570b3 #e7298a"
+# Dashed: the gravity scene without COR, which lies on the f = 0 one in (a).
+exact_dashes(i) = i == 3 ? 2 : 1
+scheme_dashes(i) = i == 4 ? 2 : 1
 
 do for [format in "png svg"] {
   if (format eq "png") {
@@ -23,20 +28,22 @@ do for [format in "png svg"] {
     set terminal svg size 1200,900 font ",10" dynamic
     set output 'figures/lemma1.svg'
   }
-  set multiplot layout 2,2 title "Lemma 1: s (L E)(s) = E(0) for s > 1? (u_0 = 5 m, v_0 = -1 m/s, phi = 0)"
+  set multiplot layout 2,2 title "Lemma 1: s (L E)(s) = E(0) for s > 1? (u_0 = 5 m, v_0 = -1 m/s, {/Symbol f} = 0)\nin (c) and (d) a deviation of exactly 0 is drawn on the bottom axis, at 10^{-18}"
 
   set xlabel "t [s]"
   set ylabel "E(t) / E(0)"
   set xrange [0:10]
   set yrange [-0.05:1.1]
-  set key at graph 0.98, graph 0.52 right top box opaque
+  set key at graph 0.98, graph 0.49 right top box opaque
   set grid
   set title "(a) exact solution: energy E = v^2/2 - f u"
   plot for [i=1:5] sprintf("%s/energy_%s.csv", results, word(exact_cases, i)) \
-       using 1:2 with lines lw 2 dt dashes(i) lc rgb word(colors, i) title word(exact_titles, i)
+       using 1:2 with lines lw 2 dt exact_dashes(i) lc rgb word(exact_colors, i) \
+       title word(exact_titles, i)
   set title "(b) direct scheme (5-1): energy E^l = (v^l)^2/2 - f u^l"
   plot for [i=1:5] sprintf("%s/energy_%s.csv", results, word(scheme_cases, i)) \
-       using 1:2 with lines lw 2 dt dashes(i) lc rgb word(colors, i) title word(scheme_titles, i)
+       using 1:2 with lines lw 2 dt scheme_dashes(i) lc rgb word(scheme_colors, i) \
+       title word(scheme_titles, i)
 
   set xlabel "s [1/s]"
   set ylabel "|s (L E)(s) - E(0)| / |E(0)|"
@@ -47,19 +54,19 @@ do for [format in "png svg"] {
   set key at graph 0.98, graph 0.72 right top box opaque
   set title "(c) exact solution on [0, inf): lines GSL quadrature, circles sum_k dE_k e^{-s t_k}"
   plot for [i=1:5] sprintf("%s/deviation.csv", results) \
-         using 1:(at_least(column(word(exact_cases, i)))) with lines lw 2 dt dashes(i) \
-         lc rgb word(colors, i) title word(exact_titles, i), \
+         using 1:(at_least(column(word(exact_cases, i)))) with lines lw 2 dt exact_dashes(i) \
+         lc rgb word(exact_colors, i) title word(exact_titles, i), \
        for [i=1:5] sprintf("%s/deviation.csv", results) \
          using 1:(at_least(column(word(exact_cases, i)."_predicted"))) with points pt 6 ps 1 \
-         lc rgb word(colors, i) notitle, \
+         lc rgb word(exact_colors, i) notitle, \
        1e-16 with lines lc rgb "black" lw 1.5 dt 2 title "round-off of E (1e-16)"
   set title "(d) direct scheme to T = 40 s, E^l interpolated linearly; circles as in (c)"
   plot for [i=1:5] sprintf("%s/deviation.csv", results) \
-         using 1:(at_least(column(word(scheme_cases, i)))) with lines lw 2 dt dashes(i) \
-         lc rgb word(colors, i) title word(scheme_titles, i), \
+         using 1:(at_least(column(word(scheme_cases, i)))) with lines lw 2 dt scheme_dashes(i) \
+         lc rgb word(scheme_colors, i) title word(scheme_titles, i), \
        for [i=1:5] sprintf("%s/deviation.csv", results) \
          using 1:(at_least(column(word(scheme_cases, i)."_predicted"))) with points pt 6 ps 1 \
-         lc rgb word(colors, i) notitle, \
+         lc rgb word(scheme_colors, i) notitle, \
        1e-16 with lines lc rgb "black" lw 1.5 dt 2 title "round-off of E (1e-16)"
   unset multiplot
   unset logscale y

@@ -1,19 +1,22 @@
-# Throughput. Reads results/performance/ (exp_performance), writes
-# figures/performance.{png,svg}: (a) ns per step of each time-stepper on the paper's scenes, in
-# the benchmark (simulate(), output off) and through `impact run` (a process, a scene file, CSV
-# decimated to ~1e4 rows), against the throughput targets; (b) the ensemble's particle-steps per
-# second for each vector instruction set, against the target of 1e9.
-# Usage: gnuplot -e "results='results/performance'" experiments/performance/plot.gp
+# Throughput. Reads results/performance/ (exp_performance), writes performance.{png,svg} to `out`
+# (results/figures: `make refresh-timing-figures` copies them to figures/): (a) ns per step of
+# each time-stepper on the paper's scenes, in the benchmark (simulate(), output off) and through
+# `impact run` (a process, a scene file, CSV decimated to ~1e4 rows), against the package's
+# targets; (b) the ensemble's particle-steps per second for each vector instruction set, against
+# the target of 1e9.
+# Usage: gnuplot -e "results='results/performance'; out='results/figures'" \
+#          experiments/performance/plot.gp
 if (!exists("results")) results = 'results/performance'
+if (!exists("out")) out = 'results/figures'
 set datafile separator ','
 
 do for [format in "png svg"] {
   if (format eq "png") {
     set terminal pngcairo size 1500,600 font ",10"
-    set output 'figures/performance.png'
+    set output out.'/performance.png'
   } else {
     set terminal svg size 1500,600 font ",10" dynamic
-    set output 'figures/performance.svg'
+    set output out.'/performance.svg'
   }
   set multiplot layout 1,2 title "Throughput on one core (best of 5 repetitions, CPU time)"
 
@@ -30,7 +33,7 @@ do for [format in "png svg"] {
   set key top left
   plot results.'/plot_steps.csv' skip 1 using 2:xtic(1) lc rgb "#0072B2" title "simulate(), output off", \
        '' skip 1 using 3 lc rgb "#E69F00" title "impact run, decimated CSV", \
-       '' skip 1 using ($0):4 with points pt 2 ps 2 lc rgb "#D55E00" title "target of issue 4"
+       '' skip 1 using ($0):4 with points pt 2 ps 2 lc rgb "#D55E00" title "target"
 
   set title "(b) ensemble: particles stepped together on vector lanes (960 particles)"
   set ylabel "particle-steps per second"

@@ -1,12 +1,16 @@
 # Numerical stability on stiff and extreme cases: every method over h = 1e-9..1 on the
 # extreme cases, fb_newton over its smoothing parameter, penalty over c_N and its GSL steppers.
 # The tables of the extreme cases go to $(RESULTS)/stability/table.md.
+# The wall times of the stiff runs differ from run to run: their figure goes to $(TIMING_DIR).
 EXPERIMENTS += stability
 stability_DRIVER := $(BUILD)/experiments/stability/exp_stability
+TIMING_FIGURES += stability_stiff_time.png stability_stiff_time.svg
 stability_OUTPUTS := figures/stability_map.png figures/stability_map.svg \
     figures/stability_params.png figures/stability_params.svg figures/stability_stiff.png \
-    figures/stability_stiff.svg $(RESULTS)/stability/summary.toml
+    figures/stability_stiff.svg $(TIMING_DIR)/stability_stiff_time.png \
+    $(TIMING_DIR)/stability_stiff_time.svg $(RESULTS)/stability/summary.toml
 $(stability_OUTPUTS) &: experiments/stability/plot.gp $(stability_DRIVER)
-	@mkdir -p $(RESULTS)/stability figures
+	@mkdir -p $(RESULTS)/stability figures $(TIMING_DIR)
 	$(stability_DRIVER) $(RESULTS)/stability
-	gnuplot -e "results='$(RESULTS)/stability'" experiments/stability/plot.gp
+	gnuplot -e "results='$(RESULTS)/stability'; timing='$(TIMING_DIR)'" \
+	  experiments/stability/plot.gp

@@ -2,10 +2,15 @@
 #   figures/stability_map.*     method x case x h: the outcome of each run (colour key below)
 #   figures/stability_params.*  fb_newton: epsilon x h; penalty: stepper x c_N and c_N x h
 #   figures/stability_stiff.*   penalty as c_N grows: penetration, contact duration, impulse,
-#                               error against exact, energy drift, ODE steps, run time
+#                               error against exact, energy drift, ODE steps
+#   <timing>/stability_stiff_time.*  penalty as c_N grows: wall time of each GSL stepper. It
+#                               differs from run to run, so it goes to `timing` (results/figures;
+#                               `make refresh-timing-figures` copies it to figures/)
 # Units: SI as in the paper (f = -9.80665 m/s^2); N and c_N are per unit mass, so c_N is in s^-2.
-# Usage: gnuplot -e "results='results/stability'" experiments/stability/plot.gp
+# Usage: gnuplot -e "results='results/stability'; timing='results/figures'" \
+#          experiments/stability/plot.gp
 if (!exists("results")) results = 'results/stability'
+if (!exists("timing")) timing = 'results/figures'
 load results.'/labels.gp'
 
 # Outcome colours (the Outcome codes of src/impact/stability.hpp).
@@ -16,111 +21,131 @@ array outcome_title[7] = ["ok", "inaccurate (error > 1% of the amplitude)", \
 colour(code) = outcome_colour[int(code) + 1]
 
 
+# The outcome key, drawn by the last panel of a map figure wherever `set key at screen` puts it.
+outcome_key = "for [c = 1:7] NaN with boxes lc rgb outcome_colour[c] title outcome_title[c]"
+# log10 h on the maps' x axes, labelled every third decade.
+h_tics = "set xtics ('10^{-9}' -9, '10^{-6}' -6, '10^{-3}' -3, '1' 0); set mxtics 3"
+# The panel in row `row`, column `col` of the 2 x 3 parameter maps. (Macros are expanded when a
+# loop is read, so they are all defined here, before it.)
+panel_at = "set lmargin at screen 0.075 + (col - 1) * 0.32; set rmargin at screen 0.32 * col; set tmargin at screen 0.92 - (row - 1) * 0.42; set bmargin at screen 0.6 - (row - 1) * 0.42"
+
 do for [format in "png svg"] {
+  # ---- Figure 1: the extreme cases ----
   reset
   set style fill solid 1.0 noborder
-  # ---- Figure 1: the extreme cases ----
   if (format eq "png") {
-    set terminal pngcairo size 2000,700 font ",10"
+    set terminal pngcairo size 2000,760 font ",10"
     set output 'figures/stability_map.png'
   } else {
-    set terminal svg size 2000,700 font ",10" dynamic
+    set terminal svg size 2000,760 font ",10" dynamic
     set output 'figures/stability_map.svg'
   }
-  set multiplot title \
-      "Stability map: outcome of each run, method x case x h (T = min(T_{case}, 10^5 h); penalty: c_N = 10^6 s^{-2}, rk8pd, min(T_{case}, 2 10^4 h))"
+  # The cases label the rows of the first panel only; the others share its rows.
+  set multiplot layout 1,5 margins 0.175, 0.78, 0.1, 0.86 spacing 0.012 title \
+      "Stability map: outcome of each run, method x case x h (T = min(T_{case}, 10^5 h); penalty: c_N = 10^6 s^{-2}, rk8pd, min(T_{case}, 2 10^4 h))\nu_0 and floor {/Symbol f} in m ({/Symbol f} = 0 unless given), v_0 in m/s, force f in m/s^2, gravity g = -9.80665 m/s^2"
   set xrange [-9.5:0.5]
   set yrange [18.5:-0.5]
-  set xtics -9,1,0
-  set xlabel "log_{10} h [s]"
+  @h_tics
+  set xlabel "h [s]"
   unset key
   methods = "direct fb_newton moreau_jean exact penalty"
-  set size 0.155, 0.93
   do for [m = 1:5] {
-    set origin 0.155 * (m - 1), 0.0
     set title word(methods, m) noenhanced
-    @set_case_tics
-    set ytics noenhanced
+    if (m == 1) {
+      @set_case_tics
+    } else {
+      set ytics 0, 1, 18 format ""
+    }
+    if (m == 5) {
+      set key at screen 0.79, 0.5 left center box Left reverse noenhanced spacing 1.5 \
+          title "outcome of the run"
+    }
     plot results.'/map_cases.dat' index (m - 1) using 3:2:(0.5):(0.5):(colour($4)) \
-        with boxxyerror lc rgb variable notitle
+        with boxxyerror lc rgb variable notitle, @outcome_key
   }
-  # The key, in a panel of its own.
-  set origin 0.78, 0.0
-  set size 0.22, 0.93
-  unset title
-  unset border
-  unset tics
-  unset xlabel
-  set key center center box noenhanced spacing 1.5 left reverse Left
-  plot for [c = 1:7] NaN with boxes lc rgb outcome_colour[c] title outcome_title[c]
-  set border
-  set tics
-  unset key
   unset multiplot
 
-  # ---- Figure 2: fb_newton's epsilon, penalty's stepper and c_N ----
+  # ---- Figure 2: epsilon of fb_newton, stepper and c_N of penalty ----
+  reset
+  set style fill solid 1.0 noborder
   if (format eq "png") {
-    set terminal pngcairo size 1800,1000 font ",10"
+    set terminal pngcairo size 1800,1050 font ",10"
     set output 'figures/stability_params.png'
   } else {
-    set terminal svg size 1800,1000 font ",10" dynamic
+    set terminal svg size 1800,1050 font ",10" dynamic
     set output 'figures/stability_params.svg'
   }
-  set multiplot layout 2,4 title "Stability map: smoothing parameter and normal compliance"
+  # Top row: the smoothing of fb_newton, then the steppers of penalty on a bounce; bottom row:
+  # the steppers and c_N of penalty at rest; below them a strip with the outcome key.
+  # (No apostrophes in this loop: gnuplot would take one for a quote and stop expanding macros.)
+  set multiplot title \
+      "Stability map: the smoothing parameter {/Symbol e} of fb\\_newton and the normal compliance c_N of penalty"
+  unset key
+  row = 1; col = 1; @panel_at
   set xrange [-9.5:0.5]
-  set xtics -9,1,0
-  set xlabel "log_{10} h [s]"
-  set ylabel "log_{10} {/Symbol e}"
+  @h_tics
+  set xlabel "h [s]"
+  set ylabel "{/Symbol e}"
   set yrange [-15.5:-1.5]
-  set ytics -15,1,-2
-  set title "fb\\_newton: bounce from u_0 = 1 m, COR = 1"
+  set ytics ('10^{-15}' -15, '10^{-12}' -12, '10^{-9}' -9, '10^{-6}' -6, '10^{-3}' -3)
+  set mytics 3
+  set title "(a) fb\\_newton: bounce from u_0 = 1 m, COR = 1"
   plot results.'/map_eps.dat' index 0 using 3:2:(0.5):(0.5):(colour($4)) \
       with boxxyerror lc rgb variable notitle
-  set title "fb\\_newton: resting contact, u_0 = {/Symbol f}, v_0 = 0"
+  row = 1; col = 2; @panel_at
+  set title "(b) fb\\_newton: resting contact, u_0 = {/Symbol f}, v_0 = 0"
   plot results.'/map_eps.dat' index 1 using 3:2:(0.5):(0.5):(colour($4)) \
       with boxxyerror lc rgb variable notitle
 
-  # The key again, in the last panel of the first row.
-  set multiplot next
+  set xrange [1.5:12.5]
+  set xtics ('10^2' 2, '10^4' 4, '10^6' 6, '10^8' 8, '10^{10}' 10, '10^{12}' 12)
+  set mxtics 2
+  set xlabel "c_N [s^{-2}]"
+  unset ylabel
+  set yrange [-0.5:6.5]
+  @set_stepper_tics
+  set ytics noenhanced
+  set mytics 1
+  row = 1; col = 3; @panel_at
+  set title "(c) penalty, per GSL stepper: bounce from u_0 = 1 m, h = 10^{-3} s"
+  plot results.'/map_stiff.dat' index 0 using 3:2:(0.5):(0.5):(colour($4)) \
+      with boxxyerror lc rgb variable notitle
+  row = 2; col = 1; @panel_at
+  set title "(d) penalty, per GSL stepper: resting contact, h = 10^{-3} s"
+  plot results.'/map_stiff.dat' index 1 using 3:2:(0.5):(0.5):(colour($4)) \
+      with boxxyerror lc rgb variable notitle
+
+  set xrange [-6.5:-0.5]
+  set xtics ('10^{-6}' -6, '10^{-5}' -5, '10^{-4}' -4, '10^{-3}' -3, '10^{-2}' -2, '10^{-1}' -1)
+  set mxtics 1
+  set xlabel "h [s]"
+  set yrange [1.5:12.5]
+  set ytics ('10^2' 2, '10^4' 4, '10^6' 6, '10^8' 8, '10^{10}' 10, '10^{12}' 12) enhanced
+  set mytics 2
+  set ylabel "c_N [s^{-2}]"
+  do for [i = 1:2] {
+    row = 2; col = 1 + i; @panel_at
+    set title sprintf("(%s) penalty %s: resting contact", word("e f", i), word("rk8pd msbdf", i))
+    plot results.'/map_penalty.dat' index (i - 1) using 3:2:(0.5):(0.5):(colour($4)) \
+        with boxxyerror lc rgb variable notitle
+  }
+
+  # The outcome key, in a strip of its own along the bottom.
+  set lmargin at screen 0.02
+  set rmargin at screen 0.98
+  set tmargin at screen 0.1
+  set bmargin at screen 0.02
   unset title
   unset border
   unset tics
   unset xlabel
   unset ylabel
-  set key center center box noenhanced spacing 1.5 left reverse Left
-  plot for [c = 1:7] NaN with boxes lc rgb outcome_colour[c] title outcome_title[c]
-  set border
-  set tics
-  unset key
-
-  set xrange [1.5:12.5]
-  set xtics 2,1,12
-  set xlabel "log_{10} c_N [s^{-2}]"
-  set ylabel "GSL stepper"
-  set yrange [-0.5:6.5]
-  @set_stepper_tics
-  set ytics noenhanced
-  set title "penalty: bounce from u_0 = 1 m, h = 10^{-3} s"
-  plot results.'/map_stiff.dat' index 0 using 3:2:(0.5):(0.5):(colour($4)) \
-      with boxxyerror lc rgb variable notitle
-  set title "penalty: resting contact, h = 10^{-3} s"
-  plot results.'/map_stiff.dat' index 1 using 3:2:(0.5):(0.5):(colour($4)) \
-      with boxxyerror lc rgb variable notitle
-
-  set xrange [-6.5:-0.5]
-  set xtics -6,1,-1
-  set xlabel "log_{10} h [s]"
-  set yrange [1.5:12.5]
-  set ytics 2,1,12
-  set ylabel "log_{10} c_N [s^{-2}]"
-  do for [i = 1:2] {
-    set title sprintf("penalty %s: resting contact", word("rk8pd msbdf", i))
-    plot results.'/map_penalty.dat' index (i - 1) using 3:2:(0.5):(0.5):(colour($4)) \
-        with boxxyerror lc rgb variable notitle
-  }
+  set key center center box horizontal maxcols 4 Left reverse noenhanced width 1
+  plot @outcome_key
   unset multiplot
 
   # ---- Figure 3: penalty as c_N grows ----
+  reset
   if (format eq "png") {
     set terminal pngcairo size 2000,950 font ",10"
     set output 'figures/stability_stiff.png'
@@ -135,77 +160,115 @@ do for [format in "png svg"] {
   finished(code) = code <= 1
   pick(st, scene, value) = (strcol(1) eq st && strcol(4) eq scene) ? value : NaN
   set multiplot layout 2,4 title \
-      "Normal compliance N = c_N max({/Symbol f} - u, 0) as c_N grows: the Signorini limit (Lemma 5's point of view) and the cost per GSL stepper"
+      "Normal compliance N = c_N max({/Symbol f} - u, 0) as c_N grows: the Signorini limit (as in Lemma 5) and the cost per GSL stepper"
   set xrange [50:2e12]
-  set autoscale y
-  set xtics auto enhanced
-  set ytics auto enhanced
   set logscale xy
   set format x "10^{%L}"
   set format y "10^{%L}"
   set xlabel "c_N [s^{-2}]"
   set grid
-  set key top right
+  # The colours of the steppers are in the key of the last panel; the key of each panel has only its
+  # reference lines, in a corner the data leave empty.
+  set key top right box opaque
   V = sqrt(2 * 9.80665)
 
-  set title "first contact, impact speed V = 4.43 m/s: penetration depth (the steppers agree)"
-  set key bottom left
+  set title "(a) first contact at V = 4.43 m/s: penetration (all steppers agree)"
   set ylabel "max({/Symbol f} - u) [m]"
   plot for [i = 1:7] stiff using 3:(pick(word(steppers, i), "bounce", $6)) \
-           with points pt 7 ps 0.8 lc rgb stepper_colour[i] title word(steppers, i), \
+           with points pt 7 ps 0.8 lc rgb stepper_colour[i] notitle, \
        stiff using 3:(pick("rk8pd", "bounce", $7)) with lines lc rgb "black" \
-           title "closed form", V / sqrt(x) with lines dt 2 lc rgb "gray" title "V / sqrt(c_N)"
+           title "closed form", V / sqrt(x) with lines dt 2 lc rgb "gray40" title "V / c_N^{1/2}"
 
-  set title "first contact: duration"
+  set title "(b) first contact: duration"
   set ylabel "contact duration [s]"
   plot for [i = 1:7] stiff using 3:(pick(word(steppers, i), "bounce", $8)) \
-           with points pt 7 ps 0.8 lc rgb stepper_colour[i] title word(steppers, i), \
+           with points pt 7 ps 0.8 lc rgb stepper_colour[i] notitle, \
        stiff using 3:(pick("rk8pd", "bounce", $9)) with lines lc rgb "black" \
-           title "closed form", pi / sqrt(x) with lines dt 2 lc rgb "gray" title "{/Symbol p} / sqrt(c_N)"
+           title "closed form", pi / sqrt(x) with lines dt 2 lc rgb "gray40" title "{/Symbol p} / c_N^{1/2}"
 
-  set title "first contact: impulse h {/Symbol S} N^l -> 2 V (COR = 1)"
-  set key top right
+  set title "(c) first contact: impulse h {/Symbol S} N^l -> 2 V (COR = 1)"
   set ylabel "impulse [m/s]"
   unset logscale y
   set format y "%g"
   plot for [i = 1:7] stiff using 3:(pick(word(steppers, i), "bounce", $10)) \
-           with points pt 7 ps 0.8 lc rgb stepper_colour[i] title word(steppers, i), \
+           with points pt 7 ps 0.8 lc rgb stepper_colour[i] notitle, \
        2 * V with lines dt 2 lc rgb "black" title "2 V (Signorini, elastic)"
   set logscale y
   set format y "10^{%L}"
 
-  set title "bounce u_0 = 1 m, T = 2 s, h = 10^{-3} s: error against exact"
-  set key bottom left
+  set title "(d) bounce u_0 = 1 m, T = 2 s, h = 10^{-3} s: error against exact"
   set ylabel "max_l |u^l - u(t_l)| [m]"
   plot for [i = 1:7] stiff using 3:(pick(word(steppers, i), "bounce", finished($15) ? $22 : NaN)) \
-           with linespoints pt 7 ps 0.8 lc rgb stepper_colour[i] title word(steppers, i), \
-       30 / sqrt(x) with lines dt 2 lc rgb "gray" title "slope -1/2"
+           with linespoints pt 7 ps 0.8 lc rgb stepper_colour[i] notitle, \
+       30 / sqrt(x) with lines dt 2 lc rgb "gray40" title "slope -1/2"
 
-  set title "bounce: energy drift v^2/2 - f u + c_N max({/Symbol f} - u, 0)^2/2"
-  set key bottom right
+  set title "(e) bounce: energy drift v^2/2 - f u + c_N max({/Symbol f} - u, 0)^2/2"
+  unset key
   set ylabel "max_l |E^l - E^0| [m^2/s^2]"
   plot for [i = 1:7] stiff using 3:(pick(word(steppers, i), "bounce", finished($15) ? $5 : NaN)) \
-           with linespoints pt 7 ps 0.8 lc rgb stepper_colour[i] title word(steppers, i)
+           with linespoints pt 7 ps 0.8 lc rgb stepper_colour[i] notitle
 
-  set title "ODE steps: bounce (T = 2 s, dashed) and resting contact (T = 0.1 s, solid)"
-  set key top left
+  set title "(f) ODE steps: bounce (T = 2 s, dashed) and resting contact (T = 0.1 s, solid)"
   set ylabel "ODE steps accepted"
+  set yrange [50:3e5]
+  set key top left box opaque
   plot for [i = 1:7] stiff using 3:(pick(word(steppers, i), "bounce", finished($15) ? $21 : NaN)) \
            with linespoints dt 2 pt 6 ps 0.8 lc rgb stepper_colour[i] notitle, \
        for [i = 1:7] stiff using 3:(pick(word(steppers, i), "rest", finished($15) ? $21 : NaN)) \
-           with linespoints pt 7 ps 0.8 lc rgb stepper_colour[i] title word(steppers, i), \
-       1e5 with lines dt 3 lc rgb "black" title "budget"
+           with linespoints pt 7 ps 0.8 lc rgb stepper_colour[i] notitle, \
+       1e5 with lines dt 3 lw 1.5 lc rgb "black" title "budget (10^5 steps)"
+  set autoscale y
 
-  set title "run time, resting contact (T = 0.1 s)"
+  set title "(g) resting contact: penetration max({/Symbol f} - u) against 2 |f| / c_N"
+  set ylabel "max({/Symbol f} - u) [m]"
+  set key top right
+  plot for [i = 1:7] stiff using 3:(pick(word(steppers, i), "rest", finished($15) ? -$16 : NaN)) \
+           with points pt 7 ps 0.8 lc rgb stepper_colour[i] notitle, \
+       2 * 9.80665 / x with lines dt 2 lc rgb "black" title "2 |f| / c_N"
+
+  # (h): the key of the colours of the steppers.
+  unset title
+  unset border
+  unset tics
+  unset xlabel
+  unset ylabel
+  unset logscale
+  unset grid
+  set xrange [0:1]
+  set yrange [0:1]
+  set key center center nobox noopaque noenhanced spacing 1.4 title "GSL stepper of penalty" \
+      left reverse Left
+  plot for [i = 1:7] NaN with linespoints pt 7 ps 0.8 lc rgb stepper_colour[i] \
+           title word(steppers, i).(i >= 5 ? " (implicit)" : " (explicit)")
+  unset multiplot
+
+  # ---- Figure 4: what the stiff runs cost in time on this machine ----
+  if (format eq "png") {
+    set terminal pngcairo size 1300,500 font ",10"
+    set output timing.'/stability_stiff_time.png'
+  } else {
+    set terminal svg size 1300,500 font ",10" dynamic
+    set output timing.'/stability_stiff_time.svg'
+  }
+  set multiplot layout 1,2 margins 0.07, 0.85, 0.12, 0.86 spacing 0.08 title \
+      "Normal compliance, resting contact (T = 0.1 s, h = 10^{-3} s): wall time per GSL stepper on this machine"
+  set border
+  set tics
+  set grid
+  set xrange [50:2e12]
+  set autoscale y
+  set logscale xy
+  set xlabel "c_N [s^{-2}]"
+  unset key
+  set title "(a) run time"
   set ylabel "wall time [s]"
   plot for [i = 1:7] stiff using 3:(pick(word(steppers, i), "rest", finished($15) ? $25 : NaN)) \
            with linespoints pt 7 ps 0.8 lc rgb stepper_colour[i] title word(steppers, i)
-
-  set title "resting contact: penetration max({/Symbol f} - u) against 2 |f| / c_N"
-  set key bottom left
-  set ylabel "max({/Symbol f} - u) [m]"
-  plot for [i = 1:7] stiff using 3:(pick(word(steppers, i), "rest", finished($15) ? -$16 : NaN)) \
-           with points pt 7 ps 0.8 lc rgb stepper_colour[i] title word(steppers, i), \
-       2 * 9.80665 / x with lines dt 2 lc rgb "black" title "2 |f| / c_N"
+  set title "(b) time per accepted ODE step"
+  set ylabel "wall time / ODE steps [s]"
+  set key at screen 0.86, 0.5 left center nobox noenhanced spacing 1.4 title "GSL stepper" \
+      left reverse Left
+  plot for [i = 1:7] stiff using 3:(pick(word(steppers, i), "rest", finished($15) ? $25 / $21 : NaN)) \
+           with linespoints pt 7 ps 0.8 lc rgb stepper_colour[i] title word(steppers, i)
   unset multiplot
 }

@@ -1,16 +1,26 @@
-# Work-precision diagrams. Reads results/work_precision/ (exp_work_precision), writes
-#   figures/work_precision.{png,svg}          the main diagram: sup |u_h - u| against CPU time on
-#                                             each scene, and the mechanism of direct's stall
-#   figures/work_precision_<scene>.{png,svg}  every error measure against CPU time (top row) and
-#                                             against h (bottom row, the time-steppers)
-# Errors below 1e-16 (rounding, or an exactly reproduced quantity) are drawn at 1e-16.
-# Usage: gnuplot -e "results='results/work_precision'" experiments/work_precision/plot.gp
+# Work-precision diagrams. Reads results/work_precision/ (exp_work_precision), writes to `out`
+# (results/figures: CPU times differ from run to run, so `make refresh-timing-figures` copies them
+# to figures/):
+#   work_precision.{png,svg}          the main diagram: sup |u_h - u| against CPU time on each
+#                                     scene, and the mechanism of direct's stall
+#   work_precision_<scene>.{png,svg}  every error measure against CPU time (first row), against h
+#                                     (second row, the time-steppers) and, on the scenes penalty
+#                                     runs, against its tolerance (third row)
+# Penalty runs on a fixed grid (h = 1e-3) and sweeps its tolerance, over which its CPU time hardly
+# moves (GSL's driver spends it on the 1e4 output steps): its sweep drawn against CPU time is a
+# vertical streak. So the CPU-time panels show its tightest tolerance only, one point per stepper
+# and c_N, and the third row shows the sweep against the tolerance.
+# Each panel's y range is that of its data. Errors below 1e-16 (exact, or rounding) are drawn on
+# the bottom axis, labelled "< 10^-16", below the decade of the smallest larger error (by 7% of the
+# axis, at least half a decade; the tics then start at that decade, so no label crowds it).
+# Usage: gnuplot -e "results='results/work_precision'; out='results/figures'" \
+#          experiments/work_precision/plot.gp
 if (!exists("results")) results = 'results/work_precision'
+if (!exists("out")) out = 'results/figures'
 load results.'/curves.gp'
 set datafile separator ','
 
 file(scene, c) = results.'/curves/'.scene.'.'.c.'.csv'
-shown(x) = x < 1e-16 ? 1e-16 : x
 is_penalty(c) = strstrt(c, "penalty") == 1
 col(c) = c eq "direct" ? "#0072B2" : c eq "fb_newton" ? "#56B4E9" : c eq "moreau_jean" ? "#009E73" : \
          c eq "siconos" ? "#000000" : strstrt(c, "rk8pd") ? "#CC79A7" : "#D55E00"
@@ -29,88 +39,149 @@ mlabel(m) = m eq "sup_u" ? "max_l |u^l - u(t_l)| [m]" : m eq "l1_v" ? "h {/Symbo
 mtitle(m) = m eq "sup_u" ? "sup-norm of u" : m eq "l1_v" ? "L^1 norm of v" : \
             m eq "energy_end" ? "energy at T" : "first impact time"
 
+# What a panel draws: mode 1 against CPU time (every curve; penalty at its tightest tolerance),
+# mode 2 against h (the time-steppers), mode 3 against the tolerance (penalty).
+tightest = 2e-11
+drawn(c) = mode == 1 ? 1 : mode == 2 ? !is_penalty(c) : is_penalty(c)
+row_drawn(c) = mode != 1 || !is_penalty(c) || column(2) < tightest
+below = 1e-16
+# The y value drawn: NaN for a row not drawn, the bottom axis (zero_at) for an error below 1e-16.
+yvalue(c, v) = row_drawn(c) ? (v < below ? zero_at : v) : NaN
+# The x value drawn: CPU time, h or tolerance (NaN for a curve the panel does not draw).
+xvalue(c) = !drawn(c) ? NaN : mode == 1 ? column(3) : mode == 2 ? column(1) : column(2)
+
+# Sets the y range of a panel from its data: scene, mode and mc (the measure's column) given.
+# stats takes the axes' current ranges and log scales into account, so they are unset around it.
+# (Macros are expanded when a loop is read, so they are all defined here, before the loops.)
+y_range = "lo = 1e300; hi = 0; zeros = 0; unset logscale; set autoscale xy; \
+  do for [c in value('curves_'.scene)] { if (drawn(c)) { \
+    stats file(scene, c) skip 1 using (row_drawn(c) && column(mc) >= below ? column(mc) : 1e300):(row_drawn(c) && column(mc) >= below ? column(mc) : 0) nooutput; \
+    lo = STATS_min_x < lo ? STATS_min_x : lo; hi = STATS_max_y > hi ? STATS_max_y : hi; \
+    stats file(scene, c) skip 1 using (row_drawn(c) && column(mc) < below ? 1 : 0) nooutput; \
+    zeros = zeros + STATS_sum } }; \
+  if (hi == 0) { lo = below; hi = 1 }; \
+  top = 10**ceil(log10(hi) + 0.2); bottom = 10**floor(log10(lo) - 0.2); \
+  if (top / bottom < 100) { bottom = top / 100 }; \
+  zero_at = zeros > 0 ? bottom / 10**(0.07 * log10(top / bottom) > 0.5 ? 0.07 * log10(top / bottom) : 0.5) : bottom; \
+  set logscale xy; set yrange [zero_at:top]; set ytics autofreq; \
+  if (zeros > 0) { set ytics bottom, 10**ceil(log10(top / bottom) / 8); set ytics add ('< 10^{-16}' zero_at) }"
+# Draws a panel: the curves as lines and points; penalty against CPU time as points alone.
+plot_curves = "plot for [c in value('curves_'.scene)] file(scene, c) skip 1 \
+    using (mode == 1 && is_penalty(c) ? NaN : xvalue(c)):(yvalue(c, column(mc))) with linespoints \
+    lc rgb col(c) dt dash(c) pt point(c) ps 0.8 lw 1.5 notitle, \
+  for [c in value('curves_'.scene)] file(scene, c) skip 1 \
+    using (mode == 1 && is_penalty(c) ? xvalue(c) : NaN):(yvalue(c, column(mc))) with points \
+    lc rgb col(c) pt point(c) ps 1.2 notitle"
+
+# Panels placed by hand: `row`, `col` in a grid of nrow x ncol over [gx0, gx1] x [gy0, gy1].
+panel_at = "pw = (gx1 - gx0 - (ncol - 1) * gapx) / ncol; ph = (gy1 - gy0 - (nrow - 1) * gapy) / nrow; \
+  set lmargin at screen gx0 + (col - 1) * (pw + gapx); set rmargin at screen gx0 + (col - 1) * (pw + gapx) + pw; \
+  set tmargin at screen gy1 - (row - 1) * (ph + gapy); set bmargin at screen gy1 - (row - 1) * (ph + gapy) - ph"
+# The key of the curves key_curves, titled key_title, in the strip right of the panels.
+key_strip = "set lmargin at screen gx1 + 0.005; set rmargin at screen 0.995; set tmargin at screen gy1; \
+  set bmargin at screen gy0; unset title; unset border; unset tics; unset xlabel; unset ylabel; \
+  unset logscale; unset grid; set xrange [0:1]; set yrange [0:1]; \
+  set key center center nobox noopaque Left reverse enhanced spacing 1.3 title key_title; \
+  plot for [c in key_curves] NaN with linespoints lc rgb col(c) dt dash(c) pt point(c) ps 0.8 lw 1.5 title tit(c); \
+  set border; set tics; set grid; unset key"
+
+# Every curve of any scene, in the order of the first scene that has it.
+all_curves = ""
+do for [scene in scenes] {
+  do for [c in value('curves_'.scene)] {
+    if (strstrt(" ".all_curves." ", " ".c." ") == 0) { all_curves = all_curves." ".c }
+  }
+}
+penalty_note = "method\n(penalty: on the grid h = 10^{-3} s;\nagainst CPU time one point,\nat its tightest tolerance 10^{-11})\n"
+zero_note = "an error below 10^{-16} (exact, or rounding) is drawn on the bottom axis, at < 10^{-16}"
+
 set style data linespoints
-set logscale xy
 set format x "10^{%L}"
 set format y "10^{%L}"
-set grid
+unset key
 
 do for [format in "png svg"] {
   # --- the main diagram ---
   if (format eq "png") {
-    set terminal pngcairo size 1500,950 font ",10"
-    set output 'figures/work_precision.png'
+    set terminal pngcairo size 1700,950 font ",10"
+    set output out.'/work_precision.png'
   } else {
-    set terminal svg size 1500,950 font ",10" dynamic
-    set output 'figures/work_precision.svg'
+    set terminal svg size 1700,950 font ",10" dynamic
+    set output out.'/work_precision.svg'
   }
-  set multiplot layout 2,3 title "Work against precision: sup-norm error of u against CPU time of the solve (T = 10 s, minimum over repetitions)"
+  set multiplot title "Work against precision: sup-norm error of u against CPU time of the solve (T = 10 s, minimum over repetitions)\n".zero_note
+  nrow = 2; ncol = 3; gx0 = 0.06; gx1 = 0.82; gy0 = 0.08; gy1 = 0.88; gapx = 0.06; gapy = 0.12
+  set logscale xy
+  set grid
   set xlabel "CPU time of the solve [s]"
   set ylabel mlabel("sup_u")
-  set yrange [1e-16:100]
+  mode = 1; mc = mcol("sup_u")
   panel = 0
   do for [scene in scenes] {
     panel = panel + 1
+    row = 1 + (panel - 1) / 3; col = 1 + (panel - 1) % 3
+    @panel_at
     set title sprintf("(%c) %s", 96 + panel, value('title_'.scene))
-    if (panel == 1 || panel == 3) {
-      set key bottom left font ",8" box opaque
-    } else {
-      unset key
-    }
-    plot for [c in value('curves_'.scene)] file(scene, c) skip 1 using 3:(shown(column(5))) \
-         lc rgb col(c) dt dash(c) pt point(c) ps 0.8 lw 1.5 title tit(c)
+    @y_range
+    @plot_curves
   }
   # (f) why direct stalls without COR: the energy it loses at an off-grid impact.
-  set title "(f) direct, no COR, off-grid impact: the energy lost does not fall with h"
+  row = 2; col = 3
+  @panel_at
+  set title "(f) direct, no COR, off-grid: the energy lost does not fall with h"
   set xlabel "step h [s]"
   set ylabel "|E^n - E(T)| [m^2/s^2]"
   unset logscale y
   set format y "%g"
   set yrange [0:0.7]
+  set ytics autofreq
   set key top left Left reverse font ",9" box opaque
   plot results.'/mechanism.csv' skip 1 using 1:4 with points pt 6 ps 2 lc rgb "#999999" \
            title "predicted 2{/Symbol q}(1-{/Symbol q})v^2, {/Symbol q} = frac({/Symbol p}/h)", \
        '' skip 1 using 1:5 with points pt 7 ps 0.9 lc rgb "#0072B2" title "measured"
-  unset multiplot
-  set logscale y
+  unset key
   set format y "10^{%L}"
+  key_curves = all_curves; key_title = penalty_note
+  @key_strip
+  unset multiplot
 
-  # --- one figure per scene: every measure against CPU time and against h ---
+  # --- one figure per scene: every measure against CPU time, against h, against the tolerance ---
   do for [scene in scenes] {
+    has_penalty = strstrt(value('curves_'.scene), "penalty") > 0
+    nrow = has_penalty ? 3 : 2; ncol = 4
     if (format eq "png") {
-      set terminal pngcairo size 1900,900 font ",10"
-      set output 'figures/work_precision_'.scene.'.png'
+      set terminal pngcairo size 2000, (has_penalty ? 1300 : 900) font ",10"
+      set output out.'/work_precision_'.scene.'.png'
     } else {
-      set terminal svg size 1900,900 font ",10" dynamic
-      set output 'figures/work_precision_'.scene.'.svg'
+      set terminal svg size 2000, (has_penalty ? 1300 : 900) font ",10" dynamic
+      set output out.'/work_precision_'.scene.'.svg'
     }
-    set multiplot layout 2,4 title "Work against precision, ".value('title_'.scene)." (T = 10 s)"
-    set yrange [1e-16:*]
+    set multiplot title "Work against precision, ".value('title_'.scene)." (T = 10 s)\n".zero_note
+    gx0 = 0.05; gx1 = 0.84; gy0 = has_penalty ? 0.05 : 0.08; gy1 = has_penalty ? 0.9 : 0.86
+    gapx = 0.05; gapy = has_penalty ? 0.08 : 0.12
+    set logscale xy
+    set grid
     panel = 0
-    do for [m in measures] {
-      panel = panel + 1
-      set title sprintf("(%c) %s against CPU time", 96 + panel, mtitle(m))
-      set xlabel "CPU time of the solve [s]"
-      set ylabel mlabel(m)
-      if (panel == 1) {
-        set key bottom left font ",8" box opaque
-      } else {
-        unset key
+    do for [mode = 1:nrow] {
+      set xlabel mode == 1 ? "CPU time of the solve [s]" : mode == 2 ? "step h [s]" : \
+          "penalty: tolerance rtol = atol"
+      # The tolerances span 8 decades: a label every second one.
+      if (mode == 3) { set xtics 100 } else { set xtics autofreq }
+      against = mode == 1 ? "CPU time" : mode == 2 ? "the step h" : "the tolerance (penalty)"
+      row = mode
+      do for [m in measures] {
+        panel = panel + 1
+        col = 1 + (panel - 1) % 4
+        @panel_at
+        mc = mcol(m)
+        set title sprintf("(%c) %s against %s", 96 + panel, mtitle(m), against)
+        set ylabel mlabel(m)
+        @y_range
+        @plot_curves
       }
-      plot for [c in value('curves_'.scene)] file(scene, c) skip 1 \
-           using 3:(shown(column(mcol(m)))) lc rgb col(c) dt dash(c) pt point(c) ps 0.8 lw 1.5 \
-           title tit(c)
     }
-    do for [m in measures] {
-      panel = panel + 1
-      set title sprintf("(%c) %s against the step h", 96 + panel, mtitle(m))
-      set xlabel "step h [s]"
-      set ylabel mlabel(m)
-      unset key
-      plot for [c in value('curves_'.scene)] file(scene, c) skip 1 \
-           using (is_penalty(c) ? NaN : column(1)):(shown(column(mcol(m)))) \
-           lc rgb col(c) dt dash(c) pt point(c) ps 0.8 lw 1.5 title tit(c)
-    }
+    key_curves = value('curves_'.scene); key_title = has_penalty ? penalty_note : "method"
+    @key_strip
     unset multiplot
   }
 }

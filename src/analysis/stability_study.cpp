@@ -1,5 +1,7 @@
 #include "analysis/stability_study.hpp"
 
+#include <map>
+
 #include "analysis/stability_cases.hpp"
 #include "analysis/stability_smoothing.hpp"
 #include "analysis/stability_stiffness.hpp"
@@ -12,11 +14,38 @@ namespace {
 // (the far-floor safeguard), and direct's COR law raises the energy when f > 0 (h = 1e-3).
 constexpr int kFarRestLogH = -9, kPushLogH = -3;
 
+// The rows of the stability map: each case's data (gnuplot enhanced text; SI units, phi = 0 unless
+// given, g = -9.80665). The case names are for the CSV files and the tables.
+const std::map<std::string, std::string> kCaseLabels = {
+    {"paper_f0", "Fig. 3: u_0 = 5, v_0 = -1, f = 0"},
+    {"paper_gravity", "Fig. 4: u_0 = 5, v_0 = -1, f = g"},
+    {"cor0", "Fig. 4 with COR = 0"},
+    {"cor1", "Fig. 4 with COR = 1"},
+    {"cor_0.999", "u_0 = 0.01, v_0 = 0, f = g, COR = 0.999"},
+    {"bounces_1e4", "u_0 = 10^{-4}, v_0 = 0, f = g"},
+    {"v0_-1e8", "u_0 = 1, v_0 = -10^8, f = 0"},
+    {"v0_-1e8_gravity", "u_0 = 1, v_0 = -10^8, f = g"},
+    {"f_-1e8", "u_0 = 1, v_0 = 0, f = -10^8"},
+    {"f_+1e8", "u_0 = 1, v_0 = -10^8, f = +10^8"},
+    {"f_+9.8", "u_0 = 0.01, v_0 = -1, f = -g (upward)"},
+    {"f_+9.8_cor1", "u_0 = 0.01, v_0 = -1, f = -g, COR = 1"},
+    {"contact_v0<0", "u_0 = {/Symbol f}, v_0 = -1, f = g"},
+    {"contact_v0=0", "u_0 = {/Symbol f}, v_0 = 0, f = g (resting)"},
+    {"contact_v0>0", "u_0 = {/Symbol f}, v_0 = +1, f = g"},
+    {"contact_f0", "u_0 = {/Symbol f}, v_0 = 0, f = 0"},
+    {"phi_1e6", "{/Symbol f} = 10^6, u_0 = {/Symbol f} + 5, v_0 = -1, f = g"},
+    {"phi_1e6_near", "{/Symbol f} = 10^6, u_0 = {/Symbol f} + 10^{-3}, v_0 = -1, f = g"},
+    {"phi_1e6_rest", "{/Symbol f} = 10^6, u_0 = {/Symbol f}, v_0 = 0, f = g"},
+};
+
 std::string gnuplot_labels() {
   std::string cases = "set_case_tics = \"set ytics (";
   const auto& list = extreme_cases();
-  for (std::size_t c = 0; c < list.size(); ++c)
-    cases += (c ? ", " : "") + std::string("'") + list[c].name + "' " + std::to_string(c);
+  for (std::size_t c = 0; c < list.size(); ++c) {
+    const auto label = kCaseLabels.find(list[c].name);
+    cases += (c ? ", " : "") + std::string("'") +
+             (label == kCaseLabels.end() ? list[c].name : label->second) + "' " + std::to_string(c);
+  }
   cases += ")\"\n";
   std::string steppers = "set_stepper_tics = \"set ytics (";
   const auto& st = stiffness_steppers();
