@@ -45,8 +45,8 @@ const Figure3Column& column(std::string_view name) {
 }  // namespace
 
 TEST_CASE(
-    "Figure 3 left: energy is conserved at h = 1e-3 only because the impact t* = 5 is a "
-    "grid point: off the grid the impact keeps (1 - 2 theta)^2 of it",
+    "C7: Figure 3 left: energy is conserved at h = 1e-3 only because the impact t* = 5 is a grid "
+    "point: off the grid the impact keeps (1 - 2 theta)^2 of it",
     "[figure3][claim]") {
   // The paper: "The bottom left picture in Figure 3 supports conservation of energy numerically".
   // With h = 1e-3, u^l = 5 - l h reaches phi exactly at l = 5000 (theta = 0); the contact step
@@ -119,8 +119,8 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "Figure 3: direct and fb_newton are almost indistinguishable: they differ by the "
-    "smoothing alone",
+    "C6: Figure 3: direct and fb_newton are almost indistinguishable: they differ by the smoothing "
+    "alone",
     "[figure3][claim]") {
   // The paper: "The results, which are almost indistinguishable". Without COR the difference is
   // fb_newton's loss of 2 sqrt(eps) in |v| at the landing (see kSmoothing): it shows in v and E
