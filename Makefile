@@ -12,7 +12,7 @@ RESULTS := results
 EXPERIMENTS :=
 include $(wildcard experiments/*/experiment.mk)
 
-.PHONY: all deps configure build tools test clean experiments claims help $(EXPERIMENTS) $(EXPERIMENTS:%=run-%)
+.PHONY: all deps configure build tools test clean experiments claims claims-md help $(EXPERIMENTS) $(EXPERIMENTS:%=run-%)
 .DEFAULT_GOAL := help
 
 help:
@@ -20,6 +20,7 @@ help:
 	@echo "make test         install what is missing, build, run the test suite (ctest)"
 	@echo "make <experiment> run one experiment and plot its figure; experiments: $(EXPERIMENTS)"
 	@echo "make claims       print the claims ledger's verdicts with the latest measured numbers"
+	@echo "make claims-md    regenerate paper_notes/claims.md from claims_source.md and the references"
 	@echo "make build        configure and build everything, tests included"
 	@echo "make performance  Google Benchmark throughput (ns per step) and the ensemble; not in all"
 	@echo "make clean        remove $(BUILD)/ and $(RESULTS)/"
@@ -57,9 +58,19 @@ $(EXPERIMENTS): tools
 .SECONDEXPANSION:
 $(EXPERIMENTS:%=run-%): run-%: $$($$*_OUTPUTS)
 
-# The claims ledger's verdict table with the numbers of the latest results.
-claims: tools
-	@$(BUILD)/impact-claims paper_notes/claims.md $(RESULTS)
+# The claims ledger: `claims` prints the verdicts with the numbers of the latest results (else the
+# committed references); `claims-md` regenerates paper_notes/claims.md from claims_source.md and
+# experiments/*/reference.toml. The tool's build goes to a log, so only the table is printed.
+CLAIMS_TOOL = @MAKEFLAGS= MAKELEVEL= cmake --build $(BUILD) --target impact_claims \
+	  > $(BUILD).claims.log 2>&1 || { cat $(BUILD).claims.log; exit 1; }
+claims: configure
+	$(CLAIMS_TOOL)
+	@$(BUILD)/impact-claims table paper_notes/claims_source.md $(RESULTS) experiments
+
+claims-md: configure
+	$(CLAIMS_TOOL)
+	@$(BUILD)/impact-claims markdown paper_notes/claims_source.md experiments paper_notes/claims.md
+	@echo "wrote paper_notes/claims.md"
 
 clean:
 	rm -rf $(BUILD) $(BUILD).configure.log $(RESULTS)
