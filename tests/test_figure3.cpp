@@ -58,7 +58,7 @@ TEST_CASE(
 
   // h = 3e-4 puts t* = 5 at 2/3 of step 16666: by (4-6) the impact removes
   // N^l (u^l - phi) = 2 theta (1 - theta) v^2 (f = 0), leaving (1 - 2 theta)^2 = 1/9 of E.
-  REQUIRE(kFigure3OffGridH == 3e-4);
+  static_assert(kFigure3OffGridH == 3e-4);  // the theta = 2/3 below depends on it
   const RestAnalysis off_grid = figure3_off_grid(kContext);
   const ContactEpisode& impact = off_grid.episodes.front();
   // theta = (u^l - phi) / (h |v|) with u^l = 5 - 16666 h carrying the rounding of 3e-4 (~1e-12).
