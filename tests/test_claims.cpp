@@ -16,13 +16,13 @@ int claims_tool(const std::string& arguments) {
 
 }  // namespace
 
-TEST_CASE("claims: paper_notes/claims.md is what impact-claims generates from claims_source.md",
-          "[claims][regression]") {
+TEST_CASE("ledger: paper_notes/claims.md is what impact-claims generates from claims_source.md",
+          "[ledger][regression]") {
   CHECK(claims_tool("check paper_notes/claims_source.md experiments paper_notes/claims.md") == 0);
 }
 
-TEST_CASE("claims: a verdict outside the vocabulary or a missing key is an error of the generator",
-          "[claims]") {
+TEST_CASE("ledger: a verdict outside the vocabulary or a missing key is an error of the generator",
+          "[ledger]") {
   const std::string dir = std::string(IMPACT_BUILD_DIR) + "/tests";
   const std::string bad = dir + "/claims_bad_verdict.md", missing = dir + "/claims_bad_key.md";
   const std::string header =
