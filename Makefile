@@ -33,7 +33,7 @@ TIMING_FIGURES :=
 EXPERIMENTS :=
 include $(wildcard experiments/*/experiment.mk)
 
-.PHONY: all deps configure build tools test clean experiments claims help refresh-timing-figures \
+.PHONY: all deps configure build tools test clean experiments claims claims-md help refresh-timing-figures \
   $(EXPERIMENTS) \
   $(EXPERIMENTS:%=run-%) $(EXPERIMENTS:%=outputs-%)
 .DEFAULT_GOAL := help
@@ -43,6 +43,7 @@ help:
 	@echo "make test         install what is missing, build, run the test suite (ctest)"
 	@echo "make <experiment> run one experiment and plot its figure; experiments: $(EXPERIMENTS)"
 	@echo "make claims       print the claims ledger's verdicts with the latest measured numbers"
+	@echo "make claims-md    regenerate paper_notes/claims.md from claims_source.md and the references"
 	@echo "make build        configure and build everything, tests included"
 	@echo "make performance  Google Benchmark throughput (ns per step) and the ensemble; not in all"
 	@echo "make refresh-timing-figures  measure again and update the committed timing figures:"
@@ -107,9 +108,19 @@ refresh-timing-figures:
 	@cp $(addprefix $(TIMING_DIR)/,$(TIMING_FIGURES)) figures/
 	@echo "refresh-timing-figures: $(words $(TIMING_FIGURES)) files copied to figures/"
 
-# The claims ledger's verdict table with the numbers of the latest results.
-claims: tools
-	@$(BUILD)/impact-claims paper_notes/claims.md $(RESULTS)
+# The claims ledger: `claims` prints the verdicts with the numbers of the latest results (else the
+# committed references); `claims-md` regenerates paper_notes/claims.md from claims_source.md and
+# experiments/*/reference.toml. The tool's build goes to a log, so only the table is printed.
+CLAIMS_TOOL = @MAKEFLAGS= MAKELEVEL= cmake --build $(BUILD) --target impact_claims \
+	  > $(BUILD).claims.log 2>&1 || { cat $(BUILD).claims.log; exit 1; }
+claims: configure
+	$(CLAIMS_TOOL)
+	@$(BUILD)/impact-claims table paper_notes/claims_source.md $(RESULTS) experiments
+
+claims-md: configure
+	$(CLAIMS_TOOL)
+	@$(BUILD)/impact-claims markdown paper_notes/claims_source.md experiments paper_notes/claims.md
+	@echo "wrote paper_notes/claims.md"
 
 clean:
 	rm -rf $(BUILD) $(BUILD).configure.log $(RESULTS)

@@ -103,10 +103,8 @@ TEST_CASE("convergence: the experiment's first rows (h >= 1e-4) match reference.
     FAIL_CHECK(difference);
 }
 
-TEST_CASE(
-    "convergence: with a COR the direct scheme converges at first order, sup error <= "
-    "COR |v0| h",
-    "[claim][convergence]") {
+TEST_CASE("C25: with a COR the direct scheme converges at first order with sup error <= COR |v0| h",
+          "[claim][convergence]") {
   // f = 0, COR = 0.75, impact at t* in (t_m, t_{m+1}]: the exact particle leaves the floor at t*
   // with e |v0| and is e |v0| (t_{m+1} - t*) <= e |v0| h above it at t_{m+1}, where the scheme
   // is at phi with the same velocity e |v0| (Section 5.2's reset). From then on both fly alike.
@@ -126,8 +124,8 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "convergence: without COR the direct scheme's impact has COR |1 - 2 theta| and u_h does "
-    "not converge to the elastic solution off the grid",
+    "C24: without COR the direct scheme's impact has COR |1 - 2 theta| and u_h does not converge "
+    "to the elastic solution off the grid",
     "[claim][convergence]") {
   const Model model;  // f = 0, no COR
   double largest = 0;
@@ -170,8 +168,8 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "convergence: subsequences h = t*/(m + theta) converge at first order to the exact "
-    "solution with COR |1 - 2 theta|: different limits, each a solution of (2-1)-(2-4)",
+    "C23: subsequences h = t*/(m + theta) converge at first order to the exact solution with COR "
+    "|1 - 2 theta|: different limits and each a solution of (2-1)-(2-4)",
     "[claim][convergence]") {
   const std::vector<std::int64_t> m = {250, 2500, 25000};
   for (double theta : {0.25, 0.75}) {
@@ -199,8 +197,8 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "error in the paper: (4-9) as printed, h sum N^l = v^n - v^0, omits the body force: "
-    "h sum N^l = v^n - v^0 - f T holds",
+    "C20: error in the paper: (4-9) as printed (h sum N^l = v^n - v^0) omits the body force: h sum "
+    "N^l = v^n - v^0 - f T holds",
     "[claim][convergence]") {
   for (const char* name : {"g_direct", "g_mj"})
     for (const ConvergencePoint& p : cheap(name).points) {

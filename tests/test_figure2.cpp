@@ -35,7 +35,7 @@ double scale(int order, double eps) {
 
 }  // namespace
 
-TEST_CASE("Section 5.1's S_2 as printed is discontinuous at t*+eps and the corrected S_2 is C2",
+TEST_CASE("C1: Section 5.1's S_2 as printed is discontinuous at t*+eps and the corrected S_2 is C2",
           "[claim][figure2]") {
   for (double eps : {1e-1, 1e-3, 1e-6}) {
     INFO("eps = " << eps);
@@ -63,7 +63,7 @@ TEST_CASE("Section 5.1's S_2 as printed is discontinuous at t*+eps and the corre
   }
 }
 
-TEST_CASE("S_eps with the corrected S_2 penetrates eps and reverses the velocity -3/2 -> 3/2",
+TEST_CASE("C1: S_eps with the corrected S_2 penetrates eps and reverses the velocity -3/2 -> 3/2",
           "[claim][figure2]") {
   const SplineImpact s(kTStar, kEps);
   CHECK(s.at(0, kTStar) == -kEps);  // S_1(t*) = -(3/2) eps + eps/2, exact in binary
@@ -75,7 +75,7 @@ TEST_CASE("S_eps with the corrected S_2 penetrates eps and reverses the velocity
   for (int i = 0; i <= 1000; ++i) CHECK(s.at_offset(0, -kEps + 2 * kEps * i / 1000) <= 0.0);
 }
 
-TEST_CASE("S_eps is not a normal compliance solution: S''/(-S) is not constant in contact",
+TEST_CASE("C1: S_eps is not a normal compliance solution: S''/(-S) is not constant in contact",
           "[claim][figure2]") {
   // Section 5.1 motivates S_eps by normal compliance, N = c_N max(phi - u, 0) with phi = 0. For
   // that, S'' / (-S) would have to be one constant c_N on (t* - eps, t* + eps). It goes from
@@ -88,7 +88,8 @@ TEST_CASE("S_eps is not a normal compliance solution: S''/(-S) is not constant i
 }
 
 TEST_CASE(
-    "GSL natural spline through (t*-eps,0), (t*,-eps), (t*+eps,0) equals the corrected formula",
+    "C2: the GSL natural spline through the knots t* - eps and t* and t* + eps (depths 0 and eps "
+    "and 0) equals the corrected formula",
     "[claim][figure2]") {
   for (double eps : {1e-1, 1e-3, 1e-6}) {
     INFO("eps = " << eps);
@@ -124,7 +125,8 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "the natural spline's end slopes are -+3d/(2 eps): they are -+3/2 because the depth d = eps",
+    "C2: the natural spline's end slopes are -+3d/(2 eps): they are -+3/2 because the depth d = "
+    "eps",
     "[claim][figure2]") {
   // Natural spline through (-eps, 0), (0, -d), (eps, 0): M(0) = 3 d / eps^2 and the end slopes
   // are -d/eps - eps M(0)/6 = -3d/(2 eps). The paper's choice d = eps fixes the impact speed 3/2.
@@ -136,7 +138,8 @@ TEST_CASE(
   }
 }
 
-TEST_CASE("figure2: run_figure2 reproduces experiments/figure2/reference.toml", "[figure2]") {
+TEST_CASE("figure2: run_figure2 reproduces experiments/figure2/reference.toml",
+          "[figure2][regression]") {
   const toml::table measured = impact::run_figure2({IMPACT_SOURCE_DIR, ""});
   const std::vector<std::string> differences = impact::compare_with_reference(
       measured, impact::read_reference(IMPACT_SOURCE_DIR, "figure2"));

@@ -45,8 +45,8 @@ const Figure3Column& column(std::string_view name) {
 }  // namespace
 
 TEST_CASE(
-    "Figure 3 left: energy is conserved at h = 1e-3 only because the impact t* = 5 is a "
-    "grid point: off the grid the impact keeps (1 - 2 theta)^2 of it",
+    "C7: Figure 3 left: energy is conserved at h = 1e-3 only because the impact t* = 5 is a grid "
+    "point: off the grid the impact keeps (1 - 2 theta)^2 of it",
     "[figure3][claim]") {
   // The paper: "The bottom left picture in Figure 3 supports conservation of energy numerically".
   // With h = 1e-3, u^l = 5 - l h reaches phi exactly at l = 5000 (theta = 0); the contact step
@@ -58,7 +58,7 @@ TEST_CASE(
 
   // h = 3e-4 puts t* = 5 at 2/3 of step 16666: by (4-6) the impact removes
   // N^l (u^l - phi) = 2 theta (1 - theta) v^2 (f = 0), leaving (1 - 2 theta)^2 = 1/9 of E.
-  REQUIRE(kFigure3OffGridH == 3e-4);
+  static_assert(kFigure3OffGridH == 3e-4);  // the theta = 2/3 below depends on it
   const RestAnalysis off_grid = figure3_off_grid(kContext);
   const ContactEpisode& impact = off_grid.episodes.front();
   // theta = (u^l - phi) / (h |v|) with u^l = 5 - 16666 h carrying the rounding of 3e-4 (~1e-12).
@@ -122,8 +122,8 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "Figure 3: direct and fb_newton are almost indistinguishable: they differ by the "
-    "smoothing alone",
+    "C6: Figure 3: direct and fb_newton are almost indistinguishable: they differ by the smoothing "
+    "alone",
     "[figure3][claim]") {
   // The paper: "The results, which are almost indistinguishable". Without COR the difference is
   // fb_newton's loss of 2 sqrt(eps) in |v| at the landing (see kSmoothing): it shows in v and E

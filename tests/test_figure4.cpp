@@ -268,7 +268,7 @@ TEST_CASE(
   CHECK(fit.order < 1.5);
 }
 
-TEST_CASE("Figure 4: direct and fb_newton agree to rounding with COR but not without it",
+TEST_CASE("C6: Figure 4: direct and fb_newton agree to rounding with COR but not without it",
           "[figure4][claim]") {
   // The paper: "The results, which are almost indistinguishable". With COR the bounce map
   // contracts (COR < 1) and the two schemes differ by rounding and by the smoothing force

@@ -110,8 +110,9 @@ TEST_CASE("the quadrature equals the closed form sum_k dE_k e^{-s t_k} in every 
   }
 }
 
-TEST_CASE("Lemma 1 holds for the elastic exact solution: s L E(s) = E(0) to quadrature accuracy",
-          "[claim][lemma1]") {
+TEST_CASE(
+    "C13: Lemma 1 holds for the elastic exact solution: s L E(s) = E(0) to quadrature accuracy",
+    "[claim][lemma1]") {
   for (const std::string name : {"exact_f0_elastic", "exact_gravity_elastic"}) {
     INFO(name);
     // Measured 4.4e-16 and 2.9e-16.
@@ -120,7 +121,7 @@ TEST_CASE("Lemma 1 holds for the elastic exact solution: s L E(s) = E(0) to quad
 }
 
 TEST_CASE(
-    "Lemma 1's hypothesis, u = phi on an interval of positive length, excludes every elastic "
+    "C14: Lemma 1's hypothesis (u = phi on an interval of positive length) excludes every elastic "
     "bounce",
     "[claim][lemma1]") {
   // The lemma assumes a contact of positive duration; an elastic impact is an instant: on the
@@ -134,8 +135,8 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "error in the paper: Lemma 1 as stated is false, a plastic impact under gravity meets "
-    "its hypotheses and loses all of E",
+    "C13: error in the paper: Lemma 1 as stated is false: a plastic impact under gravity meets its "
+    "hypotheses and loses all of E",
     "[claim][lemma1]") {
   // f constant, u piecewise smooth (one kink), u = phi on (t1, inf) so on an interval around any
   // t* > t1, E bounded (so o(e^t)); (2-1)-(2-4) hold with N = V1 delta(t - t1) + |f| on (t1, inf).
@@ -156,7 +157,7 @@ TEST_CASE(
   }
 }
 
-TEST_CASE("Lemma 1 fails with COR < 1: the deviation is the energy lost at the impacts",
+TEST_CASE("C15: Lemma 1 fails with COR < 1: the deviation is the energy lost at the impacts",
           "[claim][lemma1]") {
   // Figure 3 data with COR 0.75: E drops from 1/2 to 0.75^2/2 at t = 5, so the deviation is
   // -(1 - 0.75^2) e^{-5s}: 1.8e-3 at s = 1.1, and below round-off for s > 7.4 (e^{-5s} < 1e-16):
@@ -171,7 +172,7 @@ TEST_CASE("Lemma 1 fails with COR < 1: the deviation is the energy lost at the i
   CHECK(all_cases().at("exact_gravity_cor075").linear.front().deviation < -0.1);
 }
 
-TEST_CASE("the direct scheme passes the check only for a grid-aligned impact without gravity",
+TEST_CASE("C13: the direct scheme passes the check only for a grid-aligned impact without gravity",
           "[claim][lemma1][direct]") {
   // f = 0, h = 0.001: the impact is on a grid point and E^l is conserved to round-off.
   CHECK(max_abs_deviation(all_cases().at("direct_f0_no_cor").linear) <= kLemma1HoldsThreshold);

@@ -55,7 +55,7 @@ TEST_CASE("lemma3_bounds evaluates the printed bounds", "[lemma3]") {
   CHECK(sweep().size() == 144);
 }
 
-TEST_CASE("Lemma 3's velocity bound holds in all 144 runs, and is attained for f = 0",
+TEST_CASE("C16: Lemma 3's velocity bound holds in all 144 runs and is attained for f = 0",
           "[claim][lemma3]") {
   const Lemma3Summary s = summarize_lemma3(sweep());
   CHECK(s.velocity.violations == 0);
@@ -70,7 +70,7 @@ TEST_CASE("Lemma 3's velocity bound holds in all 144 runs, and is attained for f
 }
 
 TEST_CASE(
-    "error in the paper: Lemma 3's displacement bound |u^0| + (T/2) V fails for f = 0, while "
+    "C17: error in the paper: Lemma 3's displacement bound |u^0| + (T/2) V fails for f = 0 while "
     "|u^0| + T V holds",
     "[claim][lemma3]") {
   const Lemma3Summary s = summarize_lemma3(sweep());
@@ -89,8 +89,8 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "error in the paper: (4-7), |u^l| <= |u^0| + (1/2) int |v_h|, fails whenever the "
-    "particle ends farther from 0 than half its path",
+    "C18: error in the paper: (4-7) |u^l| <= |u^0| + (1/2) int |v_h| fails whenever the particle "
+    "ends farther from 0 than half its path",
     "[claim][lemma3]") {
   // f = 0, u^0 = 0, v^0 = 2: |u^l| = 2 t_l, the printed right-hand side is t_l.
   CHECK(find_run(1e-2, 0.0, 0.0, 2.0).measured.printed_4_7_violations == 200);
@@ -98,7 +98,7 @@ TEST_CASE(
   CHECK(s.printed_4_7_violation_runs == 88);
 }
 
-TEST_CASE("the energy inequality E^{l+1} <= E^l (4-6) holds at every step up to round-off",
+TEST_CASE("C19: the energy inequality E^{l+1} <= E^l (4-6) holds at every step up to round-off",
           "[claim][lemma3]") {
   const Lemma3Summary s = summarize_lemma3(sweep());
   CHECK(s.energy_steps == 799920);
@@ -109,7 +109,7 @@ TEST_CASE("the energy inequality E^{l+1} <= E^l (4-6) holds at every step up to 
   CHECK(s.energy_max_increase_over_tolerance < 1);
 }
 
-TEST_CASE("error in the paper: (4-9) omits the body force, h sum N^l = v^n - v^0 - f T",
+TEST_CASE("C20: error in the paper: (4-9) omits the body force: h sum N^l = v^n - v^0 - f T",
           "[claim][lemma3]") {
   for (const Lemma3Run& r : sweep()) {
     const Lemma3Measurement& m = r.measured;
@@ -122,7 +122,7 @@ TEST_CASE("error in the paper: (4-9) omits the body force, h sum N^l = v^n - v^0
   }
 }
 
-TEST_CASE("the impulse bound after (4-9), h sum N^l <= V - v^0, holds in all 144 runs",
+TEST_CASE("C21: the impulse bound after (4-9) h sum N^l <= V - v^0 holds in all 144 runs",
           "[claim][lemma3]") {
   // It holds although it is derived from (4-9) without f T: with the true identity
   // h sum N = v^n - v^0 - f T it needs v^n + |f| T <= V, which the factor (1 + |f| T e^{|f|T})

@@ -86,7 +86,7 @@ TEST_CASE("lemma4: the experiment, with the paths' first rows (h >= 1e-4), match
 }
 
 TEST_CASE(
-    "Lemma 4 with COR = 1: direct, moreau_jean and the exact solution approach one "
+    "C26: Lemma 4 with COR = 1: direct and moreau_jean and the exact solution approach one "
     "trajectory at first order",
     "[claim][lemma4]") {
   // f = 0, impact on the grid (h = 5/m): both schemes hold the particle on the floor for one
@@ -117,7 +117,7 @@ TEST_CASE(
   }
 }
 
-TEST_CASE("Lemma 4 with COR = 1: exact solutions depend Lipschitz-continuously on the data",
+TEST_CASE("C26: Lemma 4 with COR = 1: exact solutions depend Lipschitz-continuously on the data",
           "[claim][lemma4]") {
   const PerturbationRun run = run_perturbation();
   REQUIRE(run.delta.size() == 8);
@@ -140,8 +140,8 @@ TEST_CASE("Lemma 4 with COR = 1: exact solutions depend Lipschitz-continuously o
 }
 
 TEST_CASE(
-    "Lemma 4 needs COR = 1: the exact solutions with COR 1 and 1/2 both satisfy (2-1)-(2-4) "
-    "weakly from the same data, and differ",
+    "C29: Lemma 4 needs COR = 1: the exact solutions with COR 1 and 1/2 both satisfy (2-1)-(2-4) "
+    "weakly from the same data and differ",
     "[claim][lemma4]") {
   const SolutionPair& pair = pair_named("cor");
   const ExactSolution u(pair.model_u, pair.u0), w(pair.model_w, pair.w0);
@@ -160,8 +160,8 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "error in the paper: (4-13) does not follow from (4-12) when COR = 1: the two elastic "
-    "solutions from u0 = 5 and 5.5 satisfy (4-12) with z_t(0) = 0, yet z_t = 2 on (5, 5.5)",
+    "C27: error in the paper: (4-13) does not follow from (4-12) when COR = 1: the two elastic "
+    "solutions from u0 = 5 and u0 = 5.5 satisfy (4-12) with z_t(0) = 0 yet z_t = 2 for 5 < t < 5.5",
     "[claim][lemma4]") {
   const SolutionPair& pair = pair_named("elastic");
   const ExactSolution u(pair.model_u, pair.u0), w(pair.model_w, pair.w0);
@@ -185,8 +185,8 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "lemma4: the terms (4-12) drops: int N2 w_t is the energy lost by w (COR 1/2: -3/8), and "
-    "with f != 0 the force terms f (u + w)|_0^t",
+    "C27: the terms (4-12) drops: int N2 w_t is the energy lost by w (COR 1/2: -3/8) and with f != "
+    "0 the force terms f (u + w)|_0^t",
     "[claim][lemma4]") {
   const SolutionPair& cor = pair_named("cor");
   const ExactSolution u(cor.model_u, cor.u0), w(cor.model_w, cor.w0);
@@ -215,8 +215,8 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "error in the paper: Lemma 4's condition u_t^0 = 0 and u_t(t) = w_t(t) = 0 for some t is "
-    "not enough: COR 1 and sqrt(2) - 1 from u0 = 5, v0 = 0 under gravity",
+    "C28: error in the paper: Lemma 4's condition u_t^0 = 0 and u_t(t) = w_t(t) = 0 for some t is "
+    "not enough: COR 1 and sqrt(2) - 1 from u0 = 5 and v0 = 0 under gravity",
     "[claim][lemma4]") {
   const SolutionPair& pair = pair_named("condition1");
   const ExactSolution u(pair.model_u, pair.u0), w(pair.model_w, pair.w0);

@@ -41,7 +41,7 @@ toml::table numbers_named(const toml::table& table, std::string_view part) {
 
 }  // namespace
 
-TEST_CASE("Lemma 5 as printed is wrong: N_eps = S''/6 converges to delta/2, not delta",
+TEST_CASE("C3: Lemma 5 as printed is wrong: N_eps = S''/6 converges to delta/2 and not to delta",
           "[claim][lemma5]") {
   const auto one = [](double) { return 1.0; };
   for (double eps : {1e-1, 1e-3, 1e-6}) {
@@ -67,7 +67,7 @@ TEST_CASE("Lemma 5 as printed is wrong: N_eps = S''/6 converges to delta/2, not 
   }
 }
 
-TEST_CASE("S''/3 (the velocity jump 3 divided out) converges to delta", "[claim][lemma5]") {
+TEST_CASE("C3: S''/3 (the velocity jump 3 divided out) converges to delta", "[claim][lemma5]") {
   for (const TestFunction& psi : impact::lemma5_test_functions(kTStar)) {
     INFO("psi = " << psi.name);
     const double ratio =
@@ -78,7 +78,8 @@ TEST_CASE("S''/3 (the velocity jump 3 divided out) converges to delta", "[claim]
   }
 }
 
-TEST_CASE("Lemma 5's proof: each cubic piece gives psi(t*)/4, not psi(t*)/2", "[claim][lemma5]") {
+TEST_CASE("C3: Lemma 5's proof: each cubic piece gives psi(t*)/4 and not psi(t*)/2",
+          "[claim][lemma5]") {
   // The proof replaces the difference quotients (F_1(t*-eps) - F_1(t*))/(-eps) and
   // (F_2(t*+eps) - F_2(t*))/eps by F_1'(t*) = eps psi(t*) and F_2'(t*) = psi(t*); each quotient is
   // half of that, because F_1' rises from 0 to eps psi and F_2' falls from psi to 0 over the
@@ -95,8 +96,10 @@ TEST_CASE("Lemma 5's proof: each cubic piece gives psi(t*)/4, not psi(t*)/2", "[
   }
 }
 
-TEST_CASE("Lemma 5: <N_eps, psi>/psi(t*) - 1/2 = psi''(t*) eps^2 / (24 psi(t*)) + O(eps^4)",
-          "[claim][lemma5]") {
+TEST_CASE(
+    "C3: Lemma 5: the pairing ratio <N_eps psi>/psi(t*) - 1/2 = psi''(t*) eps^2 / (24 psi(t*)) + "
+    "O(eps^4)",
+    "[claim][lemma5]") {
   // N_eps = K/2 with K the tent of half-width eps (mass 1, zero first moment, second moment
   // eps^2/6), so the error is second order for every psi with psi''(t*) != 0.
   for (const TestFunction& psi : impact::lemma5_test_functions(kTStar)) {
@@ -114,7 +117,8 @@ TEST_CASE("Lemma 5: <N_eps, psi>/psi(t*) - 1/2 = psi''(t*) eps^2 / (24 psi(t*)) 
   }
 }
 
-TEST_CASE("lemma5: run_lemma5 reproduces experiments/lemma5/reference.toml", "[lemma5]") {
+TEST_CASE("lemma5: run_lemma5 reproduces experiments/lemma5/reference.toml",
+          "[lemma5][regression]") {
   const toml::table measured = impact::run_lemma5({IMPACT_SOURCE_DIR, ""});
   const toml::table reference = impact::read_reference(IMPACT_SOURCE_DIR, "lemma5");
   std::vector<std::string> differences = impact::compare_with_reference(measured, reference);

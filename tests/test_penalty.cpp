@@ -131,7 +131,7 @@ TEST_CASE("penalty: N^l >= 0 and h sum N^l = v(T) - v(0) - f T, with gravity and
   }
 }
 
-TEST_CASE("penalty: the penetration depth falls like 1/sqrt(c_N)", "[penalty][claim]") {
+TEST_CASE("C35: penalty's penetration depth falls like 1/sqrt(c_N)", "[penalty][claim]") {
   // From the floor with v0 = -1 and h a sixteenth of the contact, so that the grid hits the
   // deepest point (l = 8) and the exit (l = 16).
   const Model model{0.0, 0.0, {}};
@@ -288,23 +288,76 @@ TEST_CASE("penalty: the scene reader reads stiffness, stepper, rtol and atol wit
   CHECK_THAT(read_error("stifness = 1e8\n"), Contains("stiffness") && Contains("stepper"));
 }
 
+// RK4 for u'' = force(u) from (u0, v0) over [0, T] in n steps; returns the minimum of u, u(T) and
+// the largest distance from `reference(t)` (the Signorini solution, or a closed form).
+struct Orbit {
+  double min_u, u_end, v_end, max_dev;
+};
+template <class Force, class Reference>
+Orbit rk4(Force force, double u0, double v0, double T, int n, Reference reference) {
+  const double dt = T / n;
+  double u = u0, v = v0;
+  Orbit o{u0, u0, v0, std::fabs(u0 - reference(0.0))};
+  for (int i = 0; i < n; ++i) {
+    const double k1u = v, k1v = force(u);
+    const double k2u = v + 0.5 * dt * k1v, k2v = force(u + 0.5 * dt * k1u);
+    const double k3u = v + 0.5 * dt * k2v, k3v = force(u + 0.5 * dt * k2u);
+    const double k4u = v + dt * k3v, k4v = force(u + dt * k3u);
+    u += dt / 6 * (k1u + 2 * k2u + 2 * k3u + k4u);
+    v += dt / 6 * (k1v + 2 * k2v + 2 * k3v + k4v);
+    o.min_u = std::fmin(o.min_u, u);
+    o.max_dev = std::fmax(o.max_dev, std::fabs(u - reference((i + 1) * dt)));
+  }
+  o.u_end = u;
+  o.v_end = v;
+  return o;
+}
+
 TEST_CASE(
-    "error in the paper: N = c_N max(u - phi, 0) would push a particle above the floor: "
-    "penalty uses c_N max(phi - u, 0)",
+    "C4: error in the paper: with N = c_N max(u - phi, 0) a particle falling toward the floor "
+    "is pushed away and never reaches it: the law is N = c_N max(phi - u, 0)",
     "[penalty][claim]") {
-  // Section 5 writes N = p(u - phi), p(r) = c_N max(r, 0): at u = 5 above a floor at 0 that is a
-  // force c_N * 5 > 0 on a free particle. The physical law acts only on penetration.
-  const double c_N = 1e6, h = 1e-3;
-  const Model model{0.0, 0.0, {}};
-  const double printed_law_at_u5 = c_N * std::fmax(5.0 - model.phi, 0.0);
-  CHECK(printed_law_at_u5 > 0);
-  Penalty pen(model, h, PenaltyParams{c_N, "rk8pd", 1e-10, 1e-12});
+  // Section 5 writes N = p(u - phi), p(r) = c_N max(r, 0). A particle at u0 = 1 above the floor
+  // phi = 0, falling at v0 = -1 with f = 0, reaches the floor at t = 1 and (Signorini, COR = 1)
+  // leaves it: u(t) = |1 - t|. Under the printed law u'' = c_N u while u > 0, so
+  // u = a e^{kt} + b e^{-kt}, k = sqrt(c_N), a = (1 - 1/k)/2, b = (1 + 1/k)/2 > 0: the particle
+  // turns around within 1/c_N of the start, at height sqrt(1 - 1/c_N), and is flung away.
+  const double c_N = 1e6, k = std::sqrt(c_N), phi = 0.0;
+  auto printed = [&](double u) { return c_N * std::fmax(u - phi, 0.0); };
+  auto corrected = [&](double u) { return c_N * std::fmax(phi - u, 0.0); };
+  auto signorini = [](double t) { return std::fabs(1.0 - t); };
+  const double a = (1 - 1 / k) / 2, b = (1 + 1 / k) / 2;
+  auto closed_form = [&](double t) { return a * std::exp(k * t) + b * std::exp(-k * t); };
+
+  // The printed law over the first 0.01 s (k t = 10): the integration follows its closed form,
+  // the particle never comes closer to the floor than sqrt(1 - 1/c_N) and ends 1e4 m up, flying
+  // away at k u, while the Signorini particle has just fallen 0.01 m.
+  const Orbit pushed = rk4(printed, 1.0, -1.0, 0.01, 10000, closed_form);
+  CHECK(pushed.max_dev <= 1e-8 * closed_form(0.01));
+  CHECK(pushed.min_u >= std::sqrt(1 - 1 / c_N) - 1e-9);
+  CHECK(pushed.u_end > 1e4);
+  CHECK(pushed.v_end > 0.99 * k * pushed.u_end);
+  CHECK(std::fabs(pushed.u_end - signorini(0.01)) > 1e4);
+
+  // The corrected law over [0, 2]: the bounce of the Signorini solution, late by the contact's
+  // duration pi/k and penetrating 1/k, with the velocity given back (energy conserved).
+  const Orbit bounce = rk4(corrected, 1.0, -1.0, 2.0, 200000, signorini);
+  CHECK(bounce.min_u == Approx(-1 / k).epsilon(1e-3));
+  CHECK(bounce.max_dev <= 4 / k);
+  CHECK(bounce.max_dev >= 1 / k);  // compliance is not Signorini: the lag pi/k shows
+  // (RK4 steps over the kinks of max(., 0) at the contact's ends: 1e-5 is its error, << 1/k.)
+  CHECK(bounce.v_end == within(1.0, 1e-5));
+  CHECK(bounce.u_end == within(1.0 - kPi / k, 1e-5));
+
+  // impact's Penalty applies the corrected law: no force in free flight, a push on penetration.
+  const Model model{phi, 0.0, {}};
+  Penalty pen(model, 1e-3, PenaltyParams{c_N, "rk8pd", 1e-10, 1e-12});
   State above{5.0, -1.0};
   pen.initialize(above, 0);
-  CHECK(pen.do_step(above, 0).contact_force == 0.0);  // in free flight the compliance force is 0
+  CHECK(pen.do_step(above, 0).contact_force == 0.0);
   State penetrating{-1e-4, -1.0};
   pen.initialize(penetrating, 0);
-  CHECK(pen.do_step(penetrating, 0).contact_force > 0.0);  // it pushes back on penetration
+  CHECK(pen.do_step(penetrating, 0).contact_force > 0.0);
 }
 
 TEST_CASE("penalty: a run stops, with its reason, when it has used up its budget of ODE steps",

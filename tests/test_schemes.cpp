@@ -46,7 +46,7 @@ Scene paper_scene(const std::string& file, const std::string& method) {
 
 }  // namespace
 
-TEST_CASE("direct is exact in free flight and delays a grid-aligned impact by one step",
+TEST_CASE("C30: direct is exact in free flight and delays a grid-aligned impact by one step",
           "[direct][exact][claim]") {
   // Between contacts (4-1)-(4-2) is exact for a constant force, so up to the first contact the
   // scheme equals the exact parabola. With f = 0 and h = 2^-10 every u^l = 5 - l h is exact in
@@ -123,8 +123,8 @@ Difference max_difference(const std::vector<Row>& a, const std::vector<Row>& b, 
 }
 
 TEST_CASE(
-    "direct and fb_newton agree step by step on the paper's scenes, except where the "
-    "scheme without COR amplifies the smoothing by 2/h at each impact",
+    "C6: direct and fb_newton agree step by step on the paper's scenes except where the scheme "
+    "without COR amplifies the smoothing by 2/h at each impact",
     "[direct][fb_newton][claim]") {
   const double sqrt_eps = std::sqrt(1e-15);  // the paper's smoothing, the fb_newton default
   SECTION("Figure 3: the grid-aligned impact meets the kink of F_eps") {
@@ -167,7 +167,7 @@ TEST_CASE(
   }
 }
 
-TEST_CASE("discrete invariants of Section 4 hold on seeded random scenes",
+TEST_CASE("C19: discrete invariants of Section 4 hold on seeded random scenes",
           "[direct][fb_newton][invariants][claim]") {
   std::mt19937_64 rng(20130401);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -230,7 +230,7 @@ TEST_CASE("discrete invariants of Section 4 hold on seeded random scenes",
 }
 
 TEST_CASE(
-    "reading of (5-3): eps belongs inside the square root, so a contact step of fb_newton "
+    "C5: reading of (5-3): eps belongs inside the square root: a contact step of fb_newton "
     "satisfies (u - phi) N = eps/2",
     "[fb_newton][claim]") {
   // F_eps(a, b) = a + b - sqrt(a^2 + b^2 + eps) = 0 iff a + b > 0 and a b = eps/2. With eps

@@ -31,8 +31,8 @@
 using namespace impact;
 using namespace impact::stability_properties;
 
-TEST_CASE("stability: every method stays finite and feasible on 300 random extreme scenes",
-          "[stability][properties]") {
+TEST_CASE("C34: every method stays finite and feasible on 300 random extreme scenes",
+          "[stability][property][claim]") {
   const RandomScene r = GENERATE(random_scenes(20130401, 300));
   for (const std::string method : {"direct", "fb_newton", "moreau_jean", "exact", "penalty"}) {
     if (method == "penalty" && r.cor) continue;  // penalty has no COR law (rejected)
@@ -75,9 +75,9 @@ TEST_CASE("stability: every method stays finite and feasible on 300 random extre
 }
 
 TEST_CASE(
-    "stability: Lemma 3, E^{l+1} <= E^l and N^l (u^{l+1} - phi) = 0, for direct and "
-    "fb_newton (eps/2 for the smoothed pair) on 300 random scenes",
-    "[stability][properties][claim]") {
+    "C33: Lemma 3's E^{l+1} <= E^l and N^l (u^{l+1} - phi) = 0 hold for direct and for fb_newton "
+    "(up to eps/2 for the smoothed pair) on 300 random scenes",
+    "[stability][property][claim]") {
   const RandomScene r = GENERATE(random_scenes(19680701, 300));
   // Lemma 3 is about the scheme without COR; with one, Section 5.2 says "energy is lost after
   // the particle's impact": true for f <= 0 (the next test shows f > 0), and for fb_newton only
@@ -107,7 +107,7 @@ TEST_CASE(
 TEST_CASE(
     "stability: exact conserves the energy when COR = 1 and loses it monotonically when "
     "COR < 1, on 300 random scenes",
-    "[stability][properties][exact]") {
+    "[stability][property][exact]") {
   const RandomScene r = GENERATE(random_scenes(5, 300));
   const Scene scene = r.scene("exact");
   INFO(r);
@@ -228,8 +228,8 @@ TEST_CASE("stability: a particle resting on a floor at 1e6 stays at rest at h = 
   CHECK(run.check.max_energy_rise <= 0.0);  // measured 0 (E is -f phi to the last bit)
 }
 
-TEST_CASE("stability: Newton's last-ulp cycle ends at the bracket instead of max_iterations",
-          "[stability][fb_newton]") {
+TEST_CASE("C31: Newton's last-ulp cycle ends at the bracket instead of max_iterations",
+          "[stability][fb_newton][claim]") {
   // Found by fuzzing: with COR and eps = 1.8e-4 the particle rests in the smoothing layer, where
   // one ulp of x moves S by 1e-14 > the tolerance 1e-15. Newton then alternated between the two
   // doubles around the root and ran into max_iterations: "step 2221 (from t = 9.4849...): the
@@ -302,8 +302,8 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "stability: normal compliance tends to the Signorini impact as c_N grows (penetration "
-    "V/sqrt(c_N), duration pi/sqrt(c_N), impulse 2V)",
+    "C35: normal compliance tends to the Signorini impact as c_N grows (penetration V/sqrt(c_N) "
+    "and duration pi/sqrt(c_N) and impulse 2V)",
     "[stability][claim][penalty]") {
   // Lemma 5's point of view: the compliance force of one contact tends to an impulse 2V delta
   // (COR = 1). With gravity the contact is an oscillation about g_eq = f/c_N entered at phase
@@ -330,7 +330,7 @@ TEST_CASE(
 // ---- The experiment's key numbers against reference.toml ----
 
 TEST_CASE("stability: run_stability reproduces experiments/stability/reference.toml",
-          "[stability][reference]") {
+          "[stability][reference][regression]") {
   // Without the maps whose keys are totals over them (the 950 extreme-case runs, the 280 eps
   // runs, penalty over every c_N): the two runs the summary names and penalty at c_N = 1e6 and
   // 1e12, every stepper. What they give must equal the reference (1e-9 relative; they are the

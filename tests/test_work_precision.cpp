@@ -40,7 +40,7 @@ TEST_CASE("work_precision: the swept steps are 1, 2, 5 per decade from 0.1 to 1e
 }
 
 TEST_CASE("work_precision: run_work_precision reproduces experiments/work_precision/reference.toml",
-          "[work_precision][reference]") {
+          "[work_precision][reference][regression]") {
   // Every curve of every scene, errors only (no timing, so no CPU times, costs or [exact]
   // tables): errors at the reference point, observed orders, penalty's floors and the off-grid
   // mechanism. The same arithmetic on the same grids: only libm's last bits (exp, log, sqrt in the
@@ -60,8 +60,8 @@ TEST_CASE("work_precision: run_work_precision reproduces experiments/work_precis
 }
 
 TEST_CASE(
-    "work_precision: direct without COR does not converge at an off-grid impact, it loses "
-    "2 theta (1 - theta) v^2 whatever h",
+    "C36: direct without COR does not converge at an off-grid impact: it loses 2 theta (1 - theta) "
+    "v^2 whatever h",
     "[work_precision][direct][claim]") {
   // Off-grid scene: f = 0, v = -1, impact at t* = pi. theta = frac(pi / h) is the fraction of the
   // step before the floor; the scheme's rebound is |1 - 2 theta| and it loses
@@ -97,7 +97,7 @@ TEST_CASE(
   }
 }
 
-TEST_CASE("work_precision: moreau_jean is first order in the sup-norm of u on every scene",
+TEST_CASE("C36: moreau_jean is first order in the sup-norm of u on every scene",
           "[work_precision][moreau_jean][claim]") {
   // Slope of log sup|u_h - u| against log h over h = 0.1 .. 1e-5: 1.00 on Figure 3's scenes, 0.97
   // on Figure 4's, 0.91 on the off-grid one, where the error depends on where the impact falls in
@@ -112,10 +112,8 @@ TEST_CASE("work_precision: moreau_jean is first order in the sup-norm of u on ev
   }
 }
 
-TEST_CASE(
-    "work_precision: penalty's error floor is the contact's duration pi / sqrt(c_N) times the "
-    "speed",
-    "[work_precision][penalty][claim]") {
+TEST_CASE("C35: penalty's error floor is the contact's duration pi / sqrt(c_N) times the speed",
+          "[work_precision][penalty][claim]") {
   // f = 0, |v| = 1: a compliant contact lasts pi / sqrt(c_N) instead of an instant, so the
   // rebound lags the exact one by that time and sup |u_h - u| -> |v| pi / sqrt(c_N) as the
   // tolerance falls. Checked at the tightest tolerance of the sweep (1e-11), within 0.1%.

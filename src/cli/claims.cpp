@@ -1,18 +1,45 @@
-// `impact-claims`: prints the verdict table of paper_notes/claims.md with the numbers of the latest
-// experiment results. A ledger row cites its measured numbers as `experiment:key`; the value is
-// read from results/<experiment>/summary.toml, so the table shows what the last run measured.
+// `impact-claims`: the claims ledger with its numbers. paper_notes/claims_source.md is the ledger
+// as written: each row cites its measured numbers as `experiment:key`. This tool
+//   table SOURCE [RESULTS] [REFERENCES]   prints the verdicts in the terminal with the numbers of
+//                                         the latest run (RESULTS/<experiment>/summary.toml, else
+//                                         the committed REFERENCES/<experiment>/reference.toml);
+//   markdown SOURCE REFERENCES [OUT]      writes paper_notes/claims.md: the same ledger with the
+//                                         committed numbers in place of the keys, and a tally;
+//   check SOURCE REFERENCES COMMITTED     exits 1 when COMMITTED is not what `markdown` writes.
+// A row's verdict must start with one of the five verdicts of `kVerdicts`; a row that does not, or
+// that cites a key the references lack, or names no test, is an error (exit 1, naming the row).
 #include <toml++/toml.h>
 
+#include <array>
+#include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <map>
+#include <optional>
 #include <regex>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace {
+
+// The fixed vocabulary, longest first where one is a prefix of another.
+constexpr std::array<const char*, 5> kVerdicts = {"reproduced under a stated condition",
+                                                  "holds by construction", "not reproduced",
+                                                  "error in the paper", "reproduced"};
+constexpr std::array<std::size_t, 5> kTallyOrder = {4, 0, 1, 2, 3};  // reading order of the tally
+
+struct Row {
+  std::vector<std::string> cells;  // id | where | claim | experiment / test | measured | verdict
+  std::size_t verdict = 0;         // index into kVerdicts
+};
+
+struct Error : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 
 // The cells of a Markdown table row; "\|" is a literal bar inside a cell.
 std::vector<std::string> cells(const std::string& row) {
@@ -37,55 +64,247 @@ std::vector<std::string> cells(const std::string& row) {
   return out;
 }
 
-std::string latest(const std::string& results, const std::string& experiment,
-                   const std::string& key, std::map<std::string, toml::table>& cache) {
-  auto it = cache.find(experiment);
-  if (it == cache.end()) {
-    toml::table summary;
-    try {
-      summary = toml::parse_file(results + "/" + experiment + "/summary.toml");
-    } catch (const toml::parse_error&) {
-      return "(no results: make " + experiment + ")";
-    }
-    it = cache.emplace(experiment, std::move(summary)).first;
+std::string escape_bars(const std::string& cell) {
+  std::string out;
+  for (const char c : cell) out += c == '|' ? std::string("\\|") : std::string(1, c);
+  return out;
+}
+
+bool is_row(const std::string& line) {
+  return line.rfind("| C", 0) == 0;
+}
+
+Row parse_row(const std::string& line) {
+  Row row{cells(line), 0};
+  if (row.cells.size() != 6)
+    throw Error("row has " + std::to_string(row.cells.size()) + " cells, not 6: " + line);
+  const std::string& id = row.cells[0];
+  const std::string& verdict = row.cells[5];
+  std::size_t k = 0;
+  for (; k < kVerdicts.size(); ++k) {
+    const std::string v = kVerdicts[k];
+    if (verdict.rfind(v, 0) == 0 &&
+        (verdict.size() == v.size() ||
+         std::string(" :;,(").find(verdict[v.size()]) != std::string::npos))
+      break;
   }
-  const toml::node_view<const toml::node> node = std::as_const(it->second).at_path(key);
-  if (!node) return "(" + key + " missing)";
+  if (k == kVerdicts.size())
+    throw Error(id + ": the verdict \"" + verdict.substr(0, 40) +
+                "...\" does not start with reproduced / reproduced under a stated condition / "
+                "holds by construction / not reproduced / error in the paper");
+  if (row.cells[3].find("test_") == std::string::npos)
+    throw Error(id + ": the experiment / test cell names no test (test_<file>)");
+  row.verdict = k;
+  return row;
+}
+
+// Significant digits: 4 for a float ("5.801", "1.066e-14"), an integer as it is.
+std::string format(const toml::node& node) {
+  if (const auto* i = node.as_integer()) return std::to_string(i->get());
+  if (const auto* f = node.as_floating_point()) {
+    std::array<char, 32> text{};
+    std::snprintf(text.data(), text.size(), "%.4g", f->get());
+    std::string s = text.data();
+    const auto e = s.find('e');  // 1.066e-14 stays, 1e+06 -> 1e6, 1e-05 -> 1e-5
+    if (e != std::string::npos) {
+      std::string exponent = s.substr(e + 1);
+      const std::string sign = exponent[0] == '-' ? "-" : "";
+      exponent.erase(0, exponent.find_first_not_of("+-0"));
+      s = s.substr(0, e) + "e" + sign + exponent;
+    }
+    return s;
+  }
   std::ostringstream value;
-  node.node()->visit([&](auto&& v) { value << v; });
+  node.visit([&](auto&& v) { value << v; });
   return value.str();
+}
+
+// The TOML files of the experiments, read once each.
+class Numbers {
+ public:
+  Numbers(std::string results, std::string references)
+      : results_(std::move(results)), references_(std::move(references)) {}
+
+  // The value of `key` in the experiment's summary (if a results folder is given and has it),
+  // else in its reference; nullopt when neither has it. `from_results` tells which was used.
+  std::optional<std::string> get(const std::string& experiment, const std::string& key,
+                                 bool* from_results = nullptr) {
+    if (!results_.empty()) {
+      if (const toml::node* n = find(results_ + "/" + experiment + "/summary.toml", key)) {
+        if (from_results) *from_results = true;
+        return format(*n);
+      }
+    }
+    if (from_results) *from_results = false;
+    if (const toml::node* n = find(references_ + "/" + experiment + "/reference.toml", key))
+      return format(*n);
+    return std::nullopt;
+  }
+
+ private:
+  const toml::node* find(const std::string& path, const std::string& key) {
+    auto it = files_.find(path);
+    if (it == files_.end()) {
+      std::optional<toml::table> table;
+      try {
+        table = toml::parse_file(path);
+      } catch (const toml::parse_error&) {
+      }
+      it = files_.emplace(path, std::move(table)).first;
+    }
+    if (!it->second) return nullptr;
+    return it->second->at_path(key).node();
+  }
+  std::string results_, references_;
+  std::map<std::string, std::optional<toml::table>> files_;
+};
+
+const std::regex& reference_pattern() {
+  static const std::regex pattern("`([A-Za-z0-9_]+):([A-Za-z0-9_.\\-]+)`");
+  return pattern;
+}
+
+// The measured cell with each `experiment:key` replaced by its committed value.
+std::string substitute(const Row& row, Numbers& numbers) {
+  const std::string& cell = row.cells[4];
+  std::string out;
+  auto last = cell.cbegin();
+  for (std::sregex_iterator m(cell.begin(), cell.end(), reference_pattern()), end; m != end; ++m) {
+    const auto value = numbers.get((*m)[1].str(), (*m)[2].str());
+    if (!value)
+      throw Error(row.cells[0] + ": " + (*m)[0].str() + " is not in experiments/" + (*m)[1].str() +
+                  "/reference.toml");
+    out.append(last, (*m)[0].first);
+    out += "**" + *value + "**";
+    last = (*m)[0].second;
+  }
+  out.append(last, cell.cend());
+  return out;
+}
+
+std::vector<std::string> read_lines(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw Error("cannot read " + path);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+std::string tally(const std::vector<Row>& rows) {
+  std::array<std::vector<std::string>, kVerdicts.size()> ids;
+  for (const Row& row : rows) ids[row.verdict].push_back(row.cells[0]);
+  std::ostringstream out;
+  out << "**" << rows.size() << " claims:";
+  for (std::size_t i = 0; i < kTallyOrder.size(); ++i)
+    out << (i ? "," : "") << " " << ids[kTallyOrder[i]].size() << " " << kVerdicts[kTallyOrder[i]];
+  out << ".**\n\n| verdict | claims |\n| --- | --- |\n";
+  for (const std::size_t k : kTallyOrder) {
+    out << "| " << kVerdicts[k] << " (" << ids[k].size() << ") |";
+    for (std::size_t i = 0; i < ids[k].size(); ++i) out << (i ? ", " : " ") << ids[k][i];
+    out << " |\n";
+  }
+  return out.str();
+}
+
+// paper_notes/claims.md from the source ledger: a notice, the source's title, the tally, then the
+// source with every row's keys replaced by numbers and its verdict's leading words in bold.
+std::string markdown(const std::string& source, const std::string& references) {
+  const std::vector<std::string> lines = read_lines(source);
+  std::vector<Row> rows;
+  for (const std::string& line : lines)
+    if (is_row(line)) rows.push_back(parse_row(line));
+  if (rows.empty()) throw Error("no claim rows (| C...) in " + source);
+  Numbers numbers("", references);
+  std::ostringstream out;
+  out << "<!-- Generated by impact-claims (make claims-md) from claims_source.md and the committed "
+         "experiments/*/reference.toml: edit those, not this file. -->\n";
+  std::size_t r = 0, i = 0;
+  if (!lines.empty() && lines[0].rfind("# ", 0) == 0) out << lines[i++] << "\n\n" << tally(rows);
+  for (; i < lines.size(); ++i) {
+    if (!is_row(lines[i])) {
+      out << lines[i] << "\n";
+      continue;
+    }
+    const Row& row = rows[r++];
+    std::vector<std::string> c = row.cells;
+    c[4] = substitute(row, numbers);
+    const std::size_t n = std::string(kVerdicts[row.verdict]).size();
+    c[5] = "**" + c[5].substr(0, n) + "**" + c[5].substr(n);
+    out << "|";
+    for (const std::string& cell : c) out << " " << escape_bars(cell) << " |";
+    out << "\n";
+  }
+  return out.str();
+}
+
+// The terminal table: claim, verdict, numbers (latest run, else the reference), test.
+void table(const std::string& source, const std::string& results, const std::string& references) {
+  Numbers numbers(results, references);
+  bool any_reference = false;
+  std::printf("%-4s  %-35s  %-32s  %s\n", "id", "verdict", "measured", "test");
+  for (const std::string& line : read_lines(source)) {
+    if (!is_row(line)) continue;
+    const Row row = parse_row(line);
+    std::string measured;
+    const std::string& cell = row.cells[4];
+    for (std::sregex_iterator m(cell.begin(), cell.end(), reference_pattern()), end; m != end;
+         ++m) {
+      bool from_results = false;
+      const auto value = numbers.get((*m)[1].str(), (*m)[2].str(), &from_results);
+      if (!from_results) any_reference = true;
+      measured +=
+          (measured.empty() ? "" : ", ") + value.value_or("(missing)") + (from_results ? "" : "*");
+    }
+    const std::string& test = row.cells[3];
+    const auto slash = test.find(" / ");
+    std::printf("%-4s  %-35s  %-32s  %s\n", row.cells[0].c_str(), kVerdicts[row.verdict],
+                measured.empty() ? "-" : measured.c_str(),
+                (slash == std::string::npos ? test : test.substr(slash + 3)).c_str());
+  }
+  if (any_reference)
+    std::printf("* no result of the latest run: the committed reference.toml value\n");
+}
+
+int usage() {
+  std::cerr << "usage: impact-claims table SOURCE [RESULTS] [REFERENCES]\n"
+               "       impact-claims markdown SOURCE REFERENCES [OUT]\n"
+               "       impact-claims check SOURCE REFERENCES COMMITTED\n";
+  return 2;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::string ledger = argc > 1 ? argv[1] : "paper_notes/claims.md";
-  const std::string results = argc > 2 ? argv[2] : "results";
-  std::ifstream in(ledger);
-  if (!in) {
-    std::cerr << "impact-claims: cannot read " << ledger << "\n";
-    return 2;
-  }
-  const std::regex reference("`([A-Za-z0-9_]+):([A-Za-z0-9_.\\-]+)`");
-  std::map<std::string, toml::table> cache;
-  std::string line;
-  int rows = 0;
-  while (std::getline(in, line)) {
-    if (line.rfind("| C", 0) != 0) continue;
-    const std::vector<std::string> c = cells(line);
-    if (c.size() < 6) continue;
-    // Columns: id | where | claim | experiment / test | measured | verdict
-    std::string measured;
-    for (std::sregex_iterator m(c[4].begin(), c[4].end(), reference), end; m != end; ++m)
-      measured += (measured.empty() ? "" : "; ") + (*m)[1].str() + ":" + (*m)[2].str() + " = " +
-                  latest(results, (*m)[1].str(), (*m)[2].str(), cache);
-    std::cout << c[0] << " | " << c[1] << " | " << c[5] << " | "
-              << (measured.empty() ? c[4] : measured) << "\n";
-    ++rows;
-  }
-  if (rows == 0) {
-    std::cerr << "impact-claims: no claim rows (| C...) in " << ledger << "\n";
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.size() < 2) return usage();
+  try {
+    const std::string& mode = args[0];
+    if (mode == "table") {
+      table(args[1], args.size() > 2 ? args[2] : "results",
+            args.size() > 3 ? args[3] : "experiments");
+      return 0;
+    }
+    if (args.size() < 3) return usage();
+    const std::string generated = markdown(args[1], args[2]);
+    if (mode == "markdown") {
+      if (args.size() < 4) {
+        std::cout << generated;
+        return 0;
+      }
+      std::ofstream out(args[3], std::ios::binary);
+      if (!(out << generated) || !out.flush()) throw Error("cannot write " + args[3]);
+      return 0;
+    }
+    if (mode == "check" && args.size() == 4) {
+      std::ifstream in(args[3], std::ios::binary);
+      const std::string committed{std::istreambuf_iterator<char>(in), {}};
+      if (committed == generated) return 0;
+      std::cerr << "impact-claims: " << args[3] << " is stale: run `make claims-md`\n";
+      return 1;
+    }
+    return usage();
+  } catch (const Error& e) {
+    std::cerr << "impact-claims: " << e.what() << "\n";
     return 1;
   }
-  return 0;
 }
