@@ -30,6 +30,18 @@ SECONDS_SINCE = ms=$$(( ($$(date +%s%N) - start) / 1000000 )); printf '%d.%d' $$
 TIMING_DIR := $(RESULTS)/figures
 TIMING_FIGURES :=
 
+# The rule of an experiment whose driver writes results/<name>/ and whose plot.gp draws its
+# figures: $(eval $(call driver_and_plot,NAME,FIGURES,EXTRA_PREREQUISITES)) in its experiment.mk.
+define driver_and_plot
+EXPERIMENTS += $(1)
+$(1)_DRIVER := $$(BUILD)/experiments/$(1)/exp_$(1)
+$(1)_OUTPUTS := $$(addprefix figures/,$(2)) $$(RESULTS)/$(1)/summary.toml
+$$($(1)_OUTPUTS) &: experiments/$(1)/plot.gp $$($(1)_DRIVER) $(3)
+	@mkdir -p $$(RESULTS)/$(1) figures
+	$$($(1)_DRIVER) $$(RESULTS)/$(1)
+	gnuplot -e "results='$$(RESULTS)/$(1)'" experiments/$(1)/plot.gp
+endef
+
 EXPERIMENTS :=
 include $(wildcard experiments/*/experiment.mk)
 
