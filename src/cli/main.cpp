@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/plot.hpp"
 #include "impact/error_norms.hpp"
 #include "impact/output.hpp"
 #include "impact/registry.hpp"
@@ -224,6 +225,14 @@ int main(int argc, char** argv) {
       "N in the row at t_l is N^{l-1} of (4-1): the contact impulse over (t_{l-1}, t_l] / h.\n\n" +
       methods_help() + "\nExit codes: 0 ok, 1 numerical failure or write error, 2 bad input.");
 
+  CLI::App* plot_cmd = app.add_subcommand(
+      "plot",
+      "Draw the CSV of a run (impact run ... -o run.csv) with gnuplot: one panel per channel.");
+  std::string plot_csv, plot_out;
+  plot_cmd->add_option("CSV", plot_csv, "A CSV written by impact run")->required();
+  plot_cmd->add_option("--out,-o", plot_out,
+                       "The figure: .png, .pdf or .svg (default: the CSV's name with .png)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -237,6 +246,14 @@ int main(int argc, char** argv) {
     return kBadInput;
   }
 
+  if (plot_cmd->parsed()) {
+    if (plot_out.empty())
+      plot_out =
+          plot_csv.substr(0, plot_csv.rfind(".csv") == std::string::npos ? plot_csv.size()
+                                                                         : plot_csv.rfind(".csv")) +
+          ".png";
+    return impact::cli::plot_command(plot_csv, plot_out);
+  }
   bool in_place = true;
   try {
     return run(scene_path, overrides, out_path, quiet, against == "exact", in_place);
