@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "impact/contact.hpp"
 #include "impact/exact.hpp"
 #include "impact/model.hpp"
 #include "impact/run.hpp"
@@ -23,28 +24,49 @@ struct ErrorNorms {
   RunSummary run;
 };
 
+// Accumulates the norms as a run streams (an observer for simulate()), so that other observers can
+// see the same run.
+class ErrorObserver {
+ public:
+  ErrorObserver(const Model& model, const State& initial, const Grid& grid)
+      : exact_(model, initial), model_(model), grid_(grid), previous_(initial) {}
+
+  void operator()(std::int64_t l, const State& s, const StepInfo& info) {
+    const State ref = exact_.at(grid_.t(l));
+    e_.sup_u = std::fmax(e_.sup_u, std::fabs(s.u - ref.u));
+    e_.l1_v += grid_.h * std::fabs(s.v - ref.v);
+    if (!seen_contact_ && l > 0 && info.contact_force > 0) {
+      seen_contact_ = true;
+      if (auto t1 = exact_.impact_time(1))
+        e_.first_impact = grid_.t(l - 1) + floor_crossing(model_, previous_) - *t1;
+    }
+    previous_ = s;
+  }
+
+  // The norms of the run that simulate() summarised as `run`.
+  ErrorNorms result(const RunSummary& run) const {
+    ErrorNorms e = e_;
+    e.energy_end =
+        std::fabs(energy(model_, previous_) - energy(model_, exact_.at(grid_.t(grid_.steps))));
+    e.run = run;
+    return e;
+  }
+
+ private:
+  ExactSolution exact_;
+  Model model_;
+  Grid grid_;
+  State previous_;
+  bool seen_contact_ = false;
+  ErrorNorms e_;
+};
+
 template <class Stepper>
 ErrorNorms measure_errors(Stepper& stepper, const Model& model, const State& initial,
                           const Grid& grid) {
-  const ExactSolution exact(model, initial);
-  ErrorNorms e;
-  State previous = initial;
-  bool seen_contact = false;
-  e.run =
-      simulate(stepper, initial, grid, [&](std::int64_t l, const State& s, const StepInfo& info) {
-        const State ref = exact.at(grid.t(l));
-        e.sup_u = std::fmax(e.sup_u, std::fabs(s.u - ref.u));
-        e.l1_v += grid.h * std::fabs(s.v - ref.v);
-        if (!seen_contact && l > 0 && info.contact_force > 0) {
-          seen_contact = true;
-          const double crossing =
-              previous.v < 0 ? std::fmax(0.0, (previous.u - model.phi) / -previous.v) : 0.0;
-          if (auto t1 = exact.impact_time(1)) e.first_impact = grid.t(l - 1) + crossing - *t1;
-        }
-        previous = s;
-      });
-  e.energy_end = std::fabs(energy(model, previous) - energy(model, exact.at(grid.t(grid.steps))));
-  return e;
+  ErrorObserver errors(model, initial, grid);
+  const RunSummary run = simulate(stepper, initial, grid, errors);
+  return errors.result(run);
 }
 
 }  // namespace impact
