@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "impact/model.hpp"
+#include "impact/summary_lanes.hpp"
 
 namespace impact {
 
@@ -45,6 +46,13 @@ class Ensemble {
   Column contact_force() const { return force_.head(size_); }
   State state(Eigen::Index i) const { return {u_[i], v_[i]}; }
 
+  // From here on (before the first advance(), else std::logic_error) every step also updates each
+  // particle's summary (summary_lanes.hpp), as a SummaryObserver does for one particle, and notes
+  // whether it gave a non-finite u, v or N^l (where simulate() would have stopped).
+  void keep_summary();
+  SummaryLanes<double> summary(Eigen::Index i) const;
+  bool failed(Eigen::Index i) const { return !(poison_[i] == 0); }
+
   // The vector code advance() runs: "avx512f" (8 lanes), "avx2" (4 lanes) or "baseline" (2 lanes,
   // SSE2 on x86-64). The constructor picks the widest this processor supports; use() picks
   // another one of supported_instruction_sets() (all give the same bits), else throws
@@ -64,6 +72,10 @@ class Ensemble {
   Eigen::Array<std::int64_t, Eigen::Dynamic, 1> has_cor_;  // -1 where the model has a COR
   Eigen::ArrayXd u_, v_, force_;
   Eigen::ArrayXd anchor_u_, anchor_v_, since_;  // direct's free-flight anchor (DirectLanes)
+  // The summary (empty unless keep_summary()): the fields of SummaryLanes, and 0 while every step
+  // was finite (NaN after one was not).
+  bool summarize_ = false;
+  Eigen::ArrayXd steps_, episodes_, run_, run_first_, max_u_, first_l_, first_u_, first_v_, poison_;
 };
 
 }  // namespace impact
