@@ -51,6 +51,7 @@ void direct_step(DirectLanes<Real>& s, const Real& phi, const Real& f, const Rea
 
 struct DirectParams {
   FreeFlightForm free_flight = FreeFlightForm::closed_form;
+  bool operator==(const DirectParams&) const = default;
 };
 
 class Direct {

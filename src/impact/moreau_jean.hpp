@@ -37,6 +37,7 @@ void moreau_jean_step(Real& u, Real& v, Real& contact_force, const Real& phi, co
 
 struct MoreauJeanParams {
   double theta = 0.5;
+  bool operator==(const MoreauJeanParams&) const = default;
 };
 
 class MoreauJean {

@@ -19,6 +19,7 @@ struct PenaltyParams {
   std::string stepper = "rk8pd";  // GSL odeiv2 stepper name
   double rtol = 1e-10;
   double atol = 1e-12;
+  bool operator==(const PenaltyParams&) const = default;
 };
 
 // The names PenaltyParams::stepper accepts: every GSL odeiv2 stepper.
