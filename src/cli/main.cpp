@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/sweep.hpp"
 #include "impact/output.hpp"
 #include "impact/registry.hpp"
 #include "impact/run.hpp"
@@ -179,6 +180,9 @@ int main(int argc, char** argv) {
       "N in the row at t_l is N^{l-1} of (4-1): the contact impulse over (t_{l-1}, t_l] / h.\n\n" +
       methods_help() + "\nExit codes: 0 ok, 1 numerical failure or write error, 2 bad input.");
 
+  impact::cli::SweepOptions sweep;
+  CLI::App* sweep_cmd = impact::cli::add_sweep_command(app, sweep);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -193,6 +197,7 @@ int main(int argc, char** argv) {
   }
 
   try {
+    if (sweep_cmd->parsed()) return impact::cli::run_sweep(sweep);
     return run(scene_path, overrides, out_path, quiet);
   } catch (const impact::SceneError& e) {
     std::fprintf(stderr, "impact: error: %s\n", e.what());
