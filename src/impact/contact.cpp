@@ -27,7 +27,7 @@ bool ContactDetector::add_step(std::int64_t l, const State& before, const State&
     e.energy_after = energy(model_, after);
     e.floor_speed_out = floor_speed(after);
   }
-  count_contact(count_, contact, static_cast<double>(l));
+  count_contact(count_, contact);
   return contact;
 }
 

@@ -43,37 +43,35 @@ inline bool is_contact_step(const Model& model, const State& after, double conta
 }
 
 // What a run needs to know about its contact steps in O(1) memory: how many, how many episodes,
-// and the episode it is in. Counts are held in Real (a double, or a vector of doubles in the
-// ensemble), exact since a run has at most 2^53 steps (Grid).
+// and how long the episode it is in has lasted. Counts are held in Real (a double, or a vector of
+// doubles in the ensemble), exact since a run has at most 2^53 steps (Grid).
 template <class Real>
 struct ContactCount {
-  Real steps{};      // contact steps so far
-  Real episodes{};   // contact episodes so far
-  Real run{};        // length of the episode the last step belongs to; 0 after a free step
-  Real run_first{};  // first step l of that episode
+  Real steps{};     // contact steps so far
+  Real episodes{};  // contact episodes so far
+  Real run{};       // length of the episode the last step belongs to; 0 after a free step
 };
 
-// Adds step l (t_l -> t_{l+1}); `contact` is is_contact_step()'s result for it. Written with
-// selections only, so that a vector of particles takes the same operations as one particle.
-template <class Real, class Mask, class Step>
-void count_contact(ContactCount<Real>& c, const Mask& contact, const Step& l) {
+// Adds a step; `contact` is is_contact_step()'s result for it. Each selection is on one
+// comparison, so that a vector of particles takes the same operations as one particle (combined
+// masks made GCC build AVX-512 masks lane by lane, ensemble.cpp).
+template <class Real, class Mask>
+void count_contact(ContactCount<Real>& c, const Mask& contact) {
   c.steps = contact ? c.steps + 1 : c.steps;
   c.run = contact ? c.run + 1 : Real{};
-  const auto starts = c.run == 1;
-  c.episodes = starts ? c.episodes + 1 : c.episodes;
-  c.run_first = starts ? l : c.run_first;
+  c.episodes = c.run == 1 ? c.episodes + 1 : c.episodes;
 }
 
 // Shortest final episode that counts as rest: an impact of `direct` lasts one step, or two when
 // theta > 1/2; with a COR every scheme impact lasts one step.
 constexpr std::int64_t kMinRestSteps = 3;
 
-// t_{l+1} for the first step l of the final episode when the run ends in one of at least
-// kMinRestSteps steps: the first grid time from which the particle never leaves the floor;
-// nullopt when it is still bouncing at the end.
+// For the count of a whole run on `grid`: t_{l+1} for the first step l of the final episode when
+// the run ends in one of at least kMinRestSteps steps (l = steps - run), the first grid time from
+// which the particle never leaves the floor; nullopt when it is still bouncing at the end.
 inline std::optional<double> rest_time(const ContactCount<double>& c, const Grid& grid) {
   if (c.run < static_cast<double>(kMinRestSteps)) return std::nullopt;
-  return grid.t(static_cast<std::int64_t>(c.run_first) + 1);
+  return grid.t(grid.steps - static_cast<std::int64_t>(c.run) + 1);
 }
 
 // Episodes before rest (all of them when the particle does not rest).

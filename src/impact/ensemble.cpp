@@ -46,7 +46,7 @@ template <class T>
 
 // The columns of the summary (Ensemble::keep_summary), each at its first particle.
 struct SummaryColumns {
-  double *steps, *episodes, *run, *run_first, *max_u, *first_l, *first_u, *first_v, *poison;
+  double *steps, *episodes, *run, *max_u, *first_l, *first_u, *first_v, *poison;
 };
 
 // The columns of the ensemble, each at its first particle.
@@ -63,7 +63,6 @@ template <class Real>
   load(s.contacts.steps, c.steps + i);
   load(s.contacts.episodes, c.episodes + i);
   load(s.contacts.run, c.run + i);
-  load(s.contacts.run_first, c.run_first + i);
   load(s.max_u, c.max_u + i);
   load(s.first_l, c.first_l + i);
   load(s.first_u, c.first_u + i);
@@ -77,7 +76,6 @@ template <class Real>
   store(c.steps + i, s.contacts.steps);
   store(c.episodes + i, s.contacts.episodes);
   store(c.run + i, s.contacts.run);
-  store(c.run_first + i, s.contacts.run_first);
   store(c.max_u + i, s.max_u);
   store(c.first_l + i, s.first_l);
   store(c.first_u + i, s.first_u);
@@ -85,16 +83,18 @@ template <class Real>
   store(c.poison + i, poison);
 }
 
-// After a step from (u_before, v_before), l the step's index in every lane: the summary, and the
-// poison, which turns NaN for good once u, v or N is not finite (x * 0 is NaN for x = +-inf or NaN,
-// and a sum of finite values that overflows only makes a finite lane be re-run alone).
+// After a step from (u_before, v_before) at t_l, l in every lane: the summary, and the poison, the
+// sum of every u^{l+1} + N^l, which is not finite for good once one of them was not (an overflow
+// of finite values only makes a lane be re-run alone). A non-finite v makes u or N non-finite in
+// the same step: in direct, v_free overflows only with the free flight u_free (which is u, or
+// enters N), and v_contact is -COR v^l or v_free + h N; in moreau_jean, u is integrated from v.
 template <class Real>
 [[gnu::always_inline]] inline void summarize_step(SummaryLanes<Real>& s, Real& poison,
                                                   const Real& l, const Real& phi,
                                                   const Real& u_before, const Real& v_before,
-                                                  const Real& u, const Real& v, const Real& force) {
+                                                  const Real& u, const Real& force) {
   summary_step(s, l, phi, u_before, v_before, u, force);
-  poison += (u + v + force) * 0.0;
+  poison += u + force;
 }
 
 // A block of Vectors vectors of Lanes particles is loaded into registers, stepped `steps` times and
@@ -133,8 +133,7 @@ template <int Lanes, int Vectors, bool Summarize>
         for (int b = 0; b < Vectors; ++b) {
           const Real u = s[b].u, v = s[b].v;
           direct_step(s[b], phi[b], f[b], cor[b], has_cor[b], h);
-          summarize_step(summary[b], poison[b], l, phi[b], u, v, s[b].u, s[b].v,
-                         s[b].contact_force);
+          summarize_step(summary[b], poison[b], l, phi[b], u, v, s[b].u, s[b].contact_force);
         }
     } else {
       for (std::int64_t k = 0; k < steps; ++k)
@@ -178,8 +177,7 @@ template <int Lanes, int Vectors, bool Summarize>
         for (int b = 0; b < Vectors; ++b) {
           const Real u_before = u[b], v_before = v[b];
           moreau_jean_step(u[b], v[b], force[b], phi[b], f[b], e[b], theta, h);
-          summarize_step(summary[b], poison[b], l, phi[b], u_before, v_before, u[b], v[b],
-                         force[b]);
+          summarize_step(summary[b], poison[b], l, phi[b], u_before, v_before, u[b], force[b]);
         }
     } else {
       for (std::int64_t k = 0; k < steps; ++k)
@@ -196,14 +194,19 @@ template <int Lanes, int Vectors, bool Summarize>
   }
 }
 
+// The lanes of one block of every level, method and kernel (below) divide this.
+constexpr Eigen::Index kPadding = 192;
+
 // One entry point per instruction set, each compiled for it with the kernels inlined. The block
 // shapes (lanes x vectors) were the fastest of 2..8 vectors on an AMD EPYC (Zen 4): direct keeps
-// 10 values per vector in registers, moreau_jean 6 (experiments/performance/README.md); the
-// summary adds 9 per vector (DirectSummaryVectors, MoreauJeanSummaryVectors below).
+// 10 values per vector in registers, moreau_jean 6 (experiments/performance/README.md). The
+// summary adds 8 values per vector that change at every step; with them, 3 vectors for direct and
+// 4 for moreau_jean were the fastest of 2, 3, 4 and 6 (README.md, "Sweeps").
 template <int Lanes, int Vectors, int SummaryVectors>
 [[gnu::always_inline]] inline void direct_entry(const Columns& c, Eigen::Index n,
                                                 std::int64_t first_step, std::int64_t steps,
                                                 double h, bool summarize) {
+  static_assert(kPadding % (Lanes * Vectors) == 0 && kPadding % (Lanes * SummaryVectors) == 0);
   if (summarize)
     direct_blocks<Lanes, SummaryVectors, true>(c, n, first_step, steps, h);
   else
@@ -213,13 +216,14 @@ template <int Lanes, int Vectors, int SummaryVectors>
 [[gnu::always_inline]] inline void moreau_jean_entry(const Columns& c, Eigen::Index n,
                                                      std::int64_t first_step, std::int64_t steps,
                                                      double theta, double h, bool summarize) {
+  static_assert(kPadding % (Lanes * Vectors) == 0 && kPadding % (Lanes * SummaryVectors) == 0);
   if (summarize)
     moreau_jean_blocks<Lanes, SummaryVectors, true>(c, n, first_step, steps, theta, h);
   else
     moreau_jean_blocks<Lanes, Vectors, false>(c, n, first_step, steps, theta, h);
 }
 
-constexpr int kDirectSummaryVectors = 6, kMoreauJeanSummaryVectors = 8;
+constexpr int kDirectSummaryVectors = 3, kMoreauJeanSummaryVectors = 4;
 
 void baseline_direct(const Columns& c, Eigen::Index n, std::int64_t l, std::int64_t steps, double h,
                      bool summarize) {
@@ -256,9 +260,6 @@ void baseline_moreau_jean(const Columns& c, Eigen::Index n, std::int64_t l, std:
 
 enum Level { kBaseline, kAvx2, kAvx512 };
 constexpr std::string_view kLevelNames[] = {"baseline", "avx2", "avx512f"};
-// The lanes of one block of every level and method (direct: 2, 4, 8 lanes x 6 vectors;
-// moreau_jean: x 8) divide this.
-constexpr Eigen::Index kPadding = 192;
 
 bool supported(int level) {
 #if defined(__x86_64__) && defined(__GNUC__)
@@ -342,16 +343,14 @@ void Ensemble::keep_summary() {
     throw std::logic_error("Ensemble::keep_summary: call it before the first advance()");
   summarize_ = true;
   for (Eigen::ArrayXd* column :
-       {&steps_, &episodes_, &run_, &run_first_, &first_u_, &first_v_, &poison_})
+       {&steps_, &episodes_, &run_, &first_l_, &first_u_, &first_v_, &poison_})
     column->setZero(padded_);
-  // As start_summary(): the highest position so far is u^0; no contact step yet.
-  max_u_ = u_;
-  first_l_.setConstant(padded_, -1.0);
+  max_u_ = u_;  // as start_summary(): the highest position so far is u^0
 }
 
 SummaryLanes<double> Ensemble::summary(Eigen::Index i) const {
   SummaryLanes<double> s;
-  s.contacts = {steps_[i], episodes_[i], run_[i], run_first_[i]};
+  s.contacts = {steps_[i], episodes_[i], run_[i]};
   s.max_u = max_u_[i];
   s.first_l = first_l_[i];
   s.first_u = first_u_[i];
@@ -361,9 +360,8 @@ SummaryLanes<double> Ensemble::summary(Eigen::Index i) const {
 
 void Ensemble::advance(std::int64_t steps) {
   if (steps <= 0) return;
-  const SummaryColumns summary{steps_.data(),     episodes_.data(), run_.data(),
-                               run_first_.data(), max_u_.data(),    first_l_.data(),
-                               first_u_.data(),   first_v_.data(),  poison_.data()};
+  const SummaryColumns summary{steps_.data(),   episodes_.data(), run_.data(),     max_u_.data(),
+                               first_l_.data(), first_u_.data(),  first_v_.data(), poison_.data()};
   const Columns c{phi_.data(),      f_.data(),     cor_.data(),   has_cor_.data(),
                   u_.data(),        v_.data(),     force_.data(), anchor_u_.data(),
                   anchor_v_.data(), since_.data(), summary};

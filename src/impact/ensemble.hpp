@@ -12,6 +12,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <string_view>
@@ -51,7 +52,7 @@ class Ensemble {
   // whether it gave a non-finite u, v or N^l (where simulate() would have stopped).
   void keep_summary();
   SummaryLanes<double> summary(Eigen::Index i) const;
-  bool failed(Eigen::Index i) const { return !(poison_[i] == 0); }
+  bool failed(Eigen::Index i) const { return !std::isfinite(poison_[i]); }
 
   // The vector code advance() runs: "avx512f" (8 lanes), "avx2" (4 lanes) or "baseline" (2 lanes,
   // SSE2 on x86-64). The constructor picks the widest this processor supports; use() picks
@@ -72,10 +73,10 @@ class Ensemble {
   Eigen::Array<std::int64_t, Eigen::Dynamic, 1> has_cor_;  // -1 where the model has a COR
   Eigen::ArrayXd u_, v_, force_;
   Eigen::ArrayXd anchor_u_, anchor_v_, since_;  // direct's free-flight anchor (DirectLanes)
-  // The summary (empty unless keep_summary()): the fields of SummaryLanes, and 0 while every step
-  // was finite (NaN after one was not).
+  // The summary (empty unless keep_summary()): the fields of SummaryLanes, and the poison (see
+  // ensemble.cpp), finite while every step was.
   bool summarize_ = false;
-  Eigen::ArrayXd steps_, episodes_, run_, run_first_, max_u_, first_l_, first_u_, first_v_, poison_;
+  Eigen::ArrayXd steps_, episodes_, run_, max_u_, first_l_, first_u_, first_v_, poison_;
 };
 
 }  // namespace impact

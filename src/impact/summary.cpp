@@ -11,7 +11,7 @@ PointSummary finish_summary(const SummaryLanes<double>& lanes, const Model& mode
   p.energy_final = energy(model, final);
   p.contact_steps = static_cast<std::int64_t>(lanes.contacts.steps);
   p.impacts = impacts(lanes.contacts);
-  if (lanes.first_l >= 0) {
+  if (lanes.contacts.episodes > 0) {
     const std::int64_t l = static_cast<std::int64_t>(lanes.first_l);
     p.first_impact_time = grid.t(l) + floor_crossing(model, {lanes.first_u, lanes.first_v});
   }
