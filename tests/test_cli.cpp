@@ -321,13 +321,13 @@ TEST_CASE("cli: output.every writes every k-th step and always the last", "[cli]
   CHECK(even.rows.back()[0] == 1.0);
   CHECK(even.rows[9][0] == 900 * 0.001);
 
-  // T not a multiple of h: the grid is extended to cover T (ceil), the last row is past T.
+  // T not a multiple of h: the grid stops at the last grid time before T, never past it.
   r = dir.run("run every.toml -q --set time.T=1.0505 -o X.csv");
   REQUIRE(r.code == 0);
-  Csv over = read_csv(dir / "X.csv");
-  REQUIRE(over.rows.size() == 12);  // l = 0, 100, ..., 1000 and 1051
-  CHECK(over.rows[10][0] == 1.0);
-  CHECK(over.rows.back()[0] == 1051 * 0.001);
+  Csv short_of_T = read_csv(dir / "X.csv");
+  REQUIRE(short_of_T.rows.size() == 12);  // l = 0, 100, ..., 1000 and 1050
+  CHECK(short_of_T.rows[10][0] == 1.0);
+  CHECK(short_of_T.rows.back()[0] == 1050 * 0.001);
 }
 
 TEST_CASE("cli: a numerical failure exits 1, names the step and leaves no output", "[cli]") {

@@ -7,16 +7,19 @@
 #include <cmath>
 #include <limits>
 #include <map>
-#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "analysis/lemma1.hpp"
+#include "analysis/reference.hpp"
 #include "impact/exact.hpp"
-#include "analysis/laplace.hpp"
-#include "impact/scene.hpp"
+#include "reference_support.hpp"
+#include "scene/read_scene.hpp"
 
 using namespace impact;
+using impact::testing::model_of;
+using impact::testing::number;
 
 namespace {
 
@@ -25,21 +28,14 @@ constexpr double kEps = std::numeric_limits<double>::epsilon();
 // with a compensated sum, so the whole transform is within that too.
 constexpr double kQuadrature = 1e-12;
 
-const std::string kSource = IMPACT_SOURCE_DIR;
-
-struct CaseRun {
-  std::vector<Lemma1Point> linear, constant;
-};
+const ExperimentContext kContext{IMPACT_SOURCE_DIR, ""};
 
 // Every case of the experiment, computed once (about half a second).
-const std::map<std::string, CaseRun>& all_cases() {
-  static const std::map<std::string, CaseRun> runs = [] {
-    std::map<std::string, CaseRun> r;
-    for (const Lemma1Case& c : lemma1_cases()) {
-      CaseRun run{lemma1_run(c, kSource, Interpolation::linear), {}};
-      if (!c.exact) run.constant = lemma1_run(c, kSource, Interpolation::piecewise_constant);
-      r.emplace(c.name, std::move(run));
-    }
+const std::map<std::string, Lemma1Result>& all_cases() {
+  static const std::map<std::string, Lemma1Result> runs = [] {
+    std::map<std::string, Lemma1Result> r;
+    for (Lemma1Result& result : lemma1_results(kContext))
+      r.emplace(result.c.name, std::move(result));
     return r;
   }();
   return runs;
@@ -129,8 +125,7 @@ TEST_CASE(
     "[claim][lemma1]") {
   // The lemma assumes a contact of positive duration; an elastic impact is an instant: on the
   // Figure 3 data the particle touches the floor at t = 5 only.
-  Model model;
-  const ExactSolution elastic(model, State{5.0, -1.0});
+  const ExactSolution elastic(Model{}, State{5.0, -1.0});
   REQUIRE(elastic.impact_time(1) == 5.0);
   for (double eps : {1e-3, 1e-6, 1e-9}) {
     CHECK(elastic.at(5.0 - eps).u > 0.0);
@@ -144,9 +139,7 @@ TEST_CASE(
     "[claim][lemma1]") {
   // f constant, u piecewise smooth (one kink), u = phi on (t1, inf) so on an interval around any
   // t* > t1, E bounded (so o(e^t)); (2-1)-(2-4) hold with N = V1 delta(t - t1) + |f| on (t1, inf).
-  Model model;
-  model.f = -9.80665;
-  model.cor = 0.0;
+  const Model model = model_of(-9.80665, 0.0);
   const State initial{5.0, -1.0};
   const ExactSolution plastic(model, initial);
   const double t1 = *plastic.impact_time(1);
@@ -186,15 +179,16 @@ TEST_CASE("the direct scheme passes the check only for a grid-aligned impact wit
   // f = 0, h = 0.0012: the floor is crossed a fraction theta = 2/3 of a step after t_4166, the
   // rebound speed is |1 - 2 theta| = 1/3 of the impact speed and E drops to E(0)/9 (the rounding
   // of u^l = 5 - 4166 h, ~1e-15, moves theta by ~1e-12).
-  const std::vector<double> E =
-      energy_samples(kSource + "/experiments/figure3/no_cor.toml", {"time.h=0.0012"});
+  Scene scene = load_scene(kContext.scene_path("figure3", "no_cor.toml"));
+  scene.grid = Grid::covering(scene.T, 0.0012);
+  const std::vector<double> E = energy_samples(scene);
   CHECK(E.back() / E.front() == Approx(1.0 / 9.0).epsilon(1e-9));
   CHECK(all_cases().at("direct_f0_no_cor_h0012").linear.front().deviation < -1e-3);
   // Under gravity without COR the scheme loses energy at every impact: -0.043 at s = 1.1.
   CHECK(all_cases().at("direct_gravity_no_cor").linear.front().deviation < -1e-2);
   // The two interpolations of E^l differ by O(h s) of the deviation only.
   for (const std::string name : {"direct_gravity_no_cor", "direct_gravity_cor075"}) {
-    const CaseRun& run = all_cases().at(name);
+    const Lemma1Result& run = all_cases().at(name);
     for (std::size_t i = 0; i < run.linear.size(); ++i)
       CHECK(run.linear[i].deviation ==
             Approx(run.constant[i].deviation).epsilon(run.linear[i].s * 1e-3));
@@ -202,25 +196,19 @@ TEST_CASE("the direct scheme passes the check only for a grid-aligned impact wit
 }
 
 TEST_CASE("Lemma 1 numbers match experiments/lemma1/reference.toml", "[lemma1][regression]") {
-  const toml::table reference = toml::parse_file(kSource + "/experiments/lemma1/reference.toml");
-  for (const Lemma1Case& c : lemma1_cases()) {
-    INFO(c.name);
-    const auto ref = reference["lemma1"][c.name];
-    REQUIRE(ref.is_table());
-    const auto& points = all_cases().at(c.name).linear;
-    // The deviations are E(0) times a few exponentials and energy jumps, computed to ~1e-15
-    // relative (the closed-form check above); 1e-9 relative would be a change of the physics or
-    // the quadrature, not of rounding. Values at round-off level (|x| ~ 1e-16, possibly 0 or of
-    // either sign under another libm) are covered by the absolute margin.
-    const double missing = std::numeric_limits<double>::quiet_NaN();
-    auto same = [](double measured, double expected) {
-      return measured == Approx(expected).epsilon(1e-9).margin(1e-14);
-    };
-    CHECK(same(points.front().deviation, ref["deviation_at_s_min"].value_or(missing)));
-    CHECK(same(points.back().deviation, ref["deviation_at_s_max"].value_or(missing)));
-    CHECK(same(max_abs_deviation(points), ref["max_abs_deviation"].value_or(missing)));
-    const std::optional<bool> holds = ref["holds_to_quadrature_accuracy"].value<bool>();
-    REQUIRE(holds);
-    CHECK((max_abs_deviation(points) <= kLemma1HoldsThreshold) == *holds);
-  }
+  const toml::table measured = run_lemma1(kContext);
+  const toml::table reference = read_reference(IMPACT_SOURCE_DIR, "lemma1");
+  for (const std::string& difference : compare_with_reference(measured, reference))
+    FAIL_CHECK(difference);
+  // The deviations are E(0) times a few exponentials and energy jumps, computed to ~1e-15
+  // relative (the closed-form check above); 1e-9 relative would be a change of the physics or
+  // the quadrature, not of rounding. Values at round-off level (|x| ~ 1e-16, possibly 0 or of
+  // either sign under another libm) are covered by the absolute margin.
+  for (const auto& [name, run] : all_cases())
+    for (const char* key : {"deviation_at_s_min", "deviation_at_s_max", "max_abs_deviation"}) {
+      const std::string path = "lemma1." + name + "." + key;
+      INFO(path);
+      CHECK(number(measured.at_path(path)) ==
+            Approx(number(reference.at_path(path))).epsilon(1e-9).margin(1e-14));
+    }
 }

@@ -147,17 +147,22 @@ TEST_CASE("scene: integers are accepted where numbers are expected", "[scene]") 
         "fb_newton");
 }
 
-TEST_CASE("scene: steps is T/h rounded when within 1e-9 relative, else ceil(T/h)", "[scene]") {
+TEST_CASE("scene: steps is T/h when it is whole up to rounding, else floor(T/h): never past T",
+          "[scene]") {
   auto steps = [](const std::string& T, const std::string& h) {
     return parse(kInitial + "[time]\nT = " + T + "\nh = " + h + "\n" + kDirect).grid.steps;
   };
   CHECK(steps("10.0", "0.001") == 10000);
-  CHECK(steps("0.3", "0.1") == 3);  // 0.3/0.1 = 2.9999999999999996 in doubles: rounded, not 2 or 4
+  CHECK(steps("0.3", "0.1") == 3);  // 0.3/0.1 = 2.9999999999999996 in doubles: whole, not 2
   CHECK(steps("1.0", "1.0") == 1);  // h = T: one step
-  // T not a multiple of h: the grid is extended to cover T, so the last time l h is past T.
-  CHECK(steps("10.0", "0.3") == 34);        // 33.33...: the last row is at t = 10.2
-  CHECK(steps("1.0505", "0.001") == 1051);  // 1050.5
-  CHECK(steps("1.0", "0.7") == 2);          // last time 1.4
+  // T not a multiple of h: the grid ends at the last grid time before T.
+  CHECK(steps("10.0", "0.3") == 33);        // 33.33...: the last row is at t = 9.9
+  CHECK(steps("1.0505", "0.001") == 1050);  // 1050.5
+  CHECK(steps("1.0", "0.7") == 1);          // last time 0.7
+  // A count beyond 5e8: the rounding allowance is 4 eps of T/h, not a fixed 1e-9 relative (which
+  // is 0.4 of a step here), so 400000000.4 steps are 400000000 and end 0.4 before T, not past it.
+  CHECK(steps("400000000.4", "1.0") == 400000000);
+  CHECK(steps("400000000.0", "1.0") == 400000000);
 }
 
 TEST_CASE("scene: unknown tables and keys are rejected with the allowed names", "[scene]") {

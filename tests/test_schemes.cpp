@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/tolerances.hpp"
 #include "impact/output.hpp"
 #include "impact/registry.hpp"
 #include "impact/run.hpp"
@@ -192,11 +193,7 @@ TEST_CASE("discrete invariants of Section 4 hold on seeded random scenes",
         max_u = std::fmax(max_u, std::fabs(r.s.u));
         max_v = std::fmax(max_v, std::fabs(r.s.v));
       }
-      // Round-off of E: the free flight is evaluated from the last contact as
-      // u_a + t (v_a + t f/2), whose terms reach max|u| + T max|v| + T^2 |f|/2 (see FreeFlight).
-      const double energy_roundoff =
-          16 * kEps *
-          (max_v * max_v + std::fabs(f_used) * (max_u + T * max_v + T * T * std::fabs(f_used)));
+      const double energy_roundoff = impact::energy_evaluation_roundoff(f_used, T, max_u, max_v);
       bool above = true, nonnegative = true, complementary = true, energy_down = true;
       for (std::size_t l = 1; l < rows.size(); ++l) {
         const State& s = rows[l].s;
@@ -211,13 +208,10 @@ TEST_CASE("discrete invariants of Section 4 hold on seeded random scenes",
             1e-15 + 2 * std::nextafter(std::fabs(phi), 1e300) - 2 * std::fabs(phi);
         complementary = complementary &&
                         std::fabs(N * gap) <= (method == "direct" ? 0.0 : resolution * (1 + N));
-        // E^{l+1} <= E^l (proof of Lemma 3), up to round-off: that of evaluating E, and on a
-        // contact step that of the rebound velocity 2 (phi - u^l)/h - v^l, which carries the
-        // rounding of u (one ulp) multiplied by 2/h.
+        // E^{l+1} <= E^l (proof of Lemma 3), up to round-off (analysis/tolerances.hpp).
         const State& before = rows[l - 1].s;
         const double E0 = energy(scene.model, before), E1 = energy(scene.model, s);
-        const double ulp_u = kEps * std::fmax(std::fabs(before.u), std::fabs(phi));
-        const double rebound = N > 0 ? 4 * std::fabs(s.v) * ulp_u / h : 0.0;
+        const double rebound = impact::rebound_energy_roundoff(phi, h, before.u, s.v, N);
         energy_down = energy_down && E1 <= E0 + energy_roundoff + rebound;
         impulse += h * N;
       }

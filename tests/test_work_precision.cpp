@@ -1,53 +1,27 @@
 // The work-precision study (experiments/work_precision): its machine-independent numbers (errors
-// and observed orders; CPU times depend on the machine and are not tested) recomputed through the
-// library and compared with reference.toml, the claims it supports, and the timing helpers.
+// and observed orders; CPU times depend on the machine and are not tested) recomputed by
+// run_work_precision without timing and compared with reference.toml, the claims it supports,
+// and the timing helpers.
 #include <toml++/toml.h>
 
 #include <catch2/catch.hpp>
 #include <cmath>
-#include <map>
 #include <numbers>
 #include <string>
 #include <vector>
 
-#include "impact/exact.hpp"
-#include "scene/read_scene.hpp"
-#include "analysis/work_precision.hpp"
+#include "analysis/reference.hpp"
+#include "analysis/work_precision_study.hpp"
+#include "impact/registry.hpp"
 
 using namespace impact;
 
 namespace {
 
-const std::string kDir = std::string(IMPACT_SOURCE_DIR) + "/experiments/";
+const ExperimentContext kContext{IMPACT_SOURCE_DIR, ""};
 
-const std::map<std::string, std::string> kSceneFiles = {
-    {"figure3_no_cor", "figure3/no_cor.toml"},
-    {"figure3_cor075", "figure3/cor075.toml"},
-    {"figure4_no_cor", "figure4/no_cor.toml"},
-    {"figure4_cor075", "figure4/cor075.toml"},
-    {"offgrid_no_cor", "work_precision/offgrid.toml"}};
-
-const toml::table& reference() {
-  static const toml::table table = toml::parse_file(kDir + "work_precision/reference.toml");
-  return table;
-}
-
-// The driver's sweep: h = 0.1 .. 1e-5, 1, 2 and 5 per decade.
-const std::vector<double>& swept_steps() {
-  static const std::vector<double> steps = steps_125(0.1, 1e-5);
-  return steps;
-}
-
-std::vector<WorkPrecisionPoint> errors_of(const std::string& scene, const std::string& method) {
-  return sweep_steps(kDir + kSceneFiles.at(scene), {"method.name=" + method}, swept_steps(),
-                     std::nullopt);
-}
-
-const WorkPrecisionPoint& at_step(const std::vector<WorkPrecisionPoint>& points, double h) {
-  for (const auto& p : points)
-    if (p.h == h) return p;
-  FAIL("no point at h = " << h);
-  return points.front();
+Scene scene_named(const char* name) {
+  return load_work_precision_scene(kContext, work_precision_scene(name));
 }
 
 }  // namespace
@@ -65,59 +39,24 @@ TEST_CASE("work_precision: the swept steps are 1, 2, 5 per decade from 0.1 to 1e
   for (const double step : h) CHECK(std::fabs(5 / step - std::round(5 / step)) < 1e-9);
 }
 
-TEST_CASE("work_precision: errors and observed orders of the time-steppers match reference.toml",
-          "[work_precision]") {
-  for (const auto& [scene, file] : kSceneFiles)
-    for (const std::string method : {"direct", "fb_newton", "moreau_jean"}) {
-      INFO(scene << ", " << method);
-      const toml::table& ref = *reference()[scene][method].as_table();
-      const auto points = errors_of(scene, method);
-      const WorkPrecisionPoint& at_1e3 = at_step(points, 1e-3);
-      for (const ErrorMeasure m : kErrorMeasures) {
-        const std::string key(measure_name(m));
-        INFO(key);
-        // The same arithmetic on the same grid: only libm's last bits (exp, log, sqrt in the exact
-        // solution and in the fit) may differ between platforms.
-        if (const auto value = ref[key + "_at_reference_point"].value<double>())
-          CHECK(error_of(at_1e3.errors, m) == Approx(*value).epsilon(1e-9).margin(1e-15));
-        if (const auto order = ref[key + "_order"].value<double>())
-          CHECK(observed_order(points, m, 1e-10).order == Approx(*order).margin(1e-6));
-      }
-    }
-}
-
-TEST_CASE("work_precision: penalty's errors match reference.toml", "[work_precision][penalty]") {
-  // Each curve penalty_<stepper>_cN1e<k> at rtol = atol = 1e-7 (the reference point), and its
-  // floor, the least sup error over rtol = atol = 1e-3 .. 1e-11, on the grid h = 1e-3. Adaptive
-  // steps: an ulp of difference can change which trial step GSL accepts, so the comparison allows
-  // 1e-6 relative, far below the tolerance's own effect.
-  for (const auto& [scene, file] : kSceneFiles) {
-    const toml::table& curves = *reference()[scene].as_table();
-    for (const auto& [name, node] : curves) {
-      const std::string curve(name.str());
-      if (curve.rfind("penalty_", 0) != 0) continue;
-      const std::string stepper = curve.substr(8, 5);
-      const std::string stiffness = curve.substr(curve.find("_cN") + 3);
-      INFO(scene << ", " << curve);
-      const toml::table& ref = *node.as_table();
-      const auto run = [&](const std::string& tol) {
-        return measure_scene(
-            load_scene(kDir + file, {"method.name=penalty", "method.stepper=" + stepper,
-                                     "method.stiffness=" + stiffness, "method.rtol=" + tol,
-                                     "method.atol=" + tol, "time.h=1e-3"}),
-            std::nullopt);
-      };
-      const WorkPrecisionPoint p = run("1e-7");
-      for (const ErrorMeasure m : kErrorMeasures)
-        if (const auto value =
-                ref[std::string(measure_name(m)) + "_at_reference_point"].value<double>())
-          CHECK(error_of(p.errors, m) == Approx(*value).epsilon(1e-6).margin(1e-12));
-      double floor = INFINITY;
-      for (const char* tol : {"1e-3", "1e-5", "1e-7", "1e-9", "1e-11"})
-        floor = std::fmin(floor, run(tol).errors.sup_u);
-      CHECK(floor == Approx(*ref["sup_u_floor"].value<double>()).epsilon(1e-6));
-    }
-  }
+TEST_CASE("work_precision: run_work_precision reproduces experiments/work_precision/reference.toml",
+          "[work_precision][reference]") {
+  // Every curve of every scene, errors only (no timing, so no CPU times, costs or [exact]
+  // tables): errors at the reference point, observed orders, penalty's floors and the off-grid
+  // mechanism. The same arithmetic on the same grids: only libm's last bits (exp, log, sqrt in the
+  // exact solution and in the fit) may differ between platforms, within the rule's 1e-9; penalty's
+  // adaptive steps could move by an ulp where GSL accepts a trial step, far below that too.
+  WorkPrecisionOptions errors_only;
+  errors_only.timing.reset();
+  const toml::table measured = run_work_precision(kContext, errors_only);
+  CHECK(measured.at_path("offgrid_no_cor.moreau_jean.sup_u_order").is_value());
+  CHECK(measured.at_path("figure3_no_cor.penalty_rk8pd_cN1e8.sup_u_floor").is_value());
+  CHECK_FALSE(measured.at_path("figure3_no_cor.exact").is_table());
+  const auto differences =
+      compare_with_reference(measured, read_reference(IMPACT_SOURCE_DIR, "work_precision"),
+                             work_precision_reference_rule());
+  for (const std::string& d : differences) FAIL_CHECK(d);
+  CHECK(differences.empty());
 }
 
 TEST_CASE(
@@ -128,7 +67,7 @@ TEST_CASE(
   // step before the floor; the scheme's rebound is |1 - 2 theta| and it loses
   // 2 theta (1 - theta) v^2 of energy (paper_notes/restitution.md), which does not vanish as h ->
   // 0.
-  const auto points = errors_of("offgrid_no_cor", "direct");
+  const auto points = step_curve(scene_named("offgrid_no_cor"), "direct", std::nullopt);
   for (const auto& p : points) {
     const double steps = std::numbers::pi / p.h, theta = steps - std::floor(steps);
     INFO("h = " << p.h << ", theta = " << theta);
@@ -139,9 +78,6 @@ TEST_CASE(
   REQUIRE(finest.h == 1e-5);
   CHECK(finest.errors.energy_end > 0.3);  // 0.39 at h = 1e-5, as at h = 0.1 (0.49)
   CHECK(finest.errors.sup_u > 1.0);       // the rebound is too slow: u lags by metres at T
-  const toml::table& ref = *reference()["direct_offgrid_mechanism"].as_table();
-  CHECK(finest.errors.energy_end ==
-        Approx(*ref["energy_error_at_h_min"].value<double>()).epsilon(1e-9));
 }
 
 TEST_CASE(
@@ -153,9 +89,9 @@ TEST_CASE(
   // E = E(0) = 49.533 m^2/s^2; direct ends in its period-2 chatter on the floor with E ~ 0 at
   // every h, so the energy error at T is E(0) up to the chatter's residual energy, O((h f)^2):
   // 0.026 at h = 0.1, below 1e-5 from h = 1e-3 on.
-  const Scene scene = load_scene(kDir + kSceneFiles.at("figure4_no_cor"));
+  const Scene scene = scene_named("figure4_no_cor");
   const double E0 = energy(scene.model, scene.initial);
-  for (const auto& p : errors_of("figure4_no_cor", "direct")) {
+  for (const auto& p : step_curve(scene, "direct", std::nullopt)) {
     INFO("h = " << p.h);
     CHECK(p.errors.energy_end == Approx(E0).margin(0.05));
   }
@@ -166,9 +102,11 @@ TEST_CASE("work_precision: moreau_jean is first order in the sup-norm of u on ev
   // Slope of log sup|u_h - u| against log h over h = 0.1 .. 1e-5: 1.00 on Figure 3's scenes, 0.97
   // on Figure 4's, 0.91 on the off-grid one, where the error depends on where the impact falls in
   // its step (it is between 0 and O(h), not a smooth C h).
-  for (const auto& [scene, file] : kSceneFiles) {
-    INFO(scene);
-    const OrderFit fit = observed_order(errors_of(scene, "moreau_jean"), ErrorMeasure::sup_u);
+  for (const WorkPrecisionScene& s : work_precision_scenes()) {
+    INFO(s.name);
+    const auto points =
+        step_curve(load_work_precision_scene(kContext, s), "moreau_jean", std::nullopt);
+    const OrderFit fit = observed_order(points, ErrorMeasure::sup_u);
     CHECK(fit.order > 0.85);
     CHECK(fit.order < 1.05);
   }
@@ -181,20 +119,18 @@ TEST_CASE(
   // f = 0, |v| = 1: a compliant contact lasts pi / sqrt(c_N) instead of an instant, so the
   // rebound lags the exact one by that time and sup |u_h - u| -> |v| pi / sqrt(c_N) as the
   // tolerance falls. Checked at the tightest tolerance of the sweep (1e-11), within 0.1%.
+  const Scene scene = scene_named("figure3_no_cor");
   for (const double c_N : {1e4, 1e6, 1e8}) {
-    const Scene scene = load_scene(
-        kDir + kSceneFiles.at("figure3_no_cor"),
-        {"method.name=penalty", "method.stepper=rk8pd", "method.stiffness=" + std::to_string(c_N),
-         "method.rtol=1e-11", "method.atol=1e-11"});
-    const WorkPrecisionPoint p = measure_scene(scene, std::nullopt);
+    const WorkPrecisionPoint p =
+        measure_scene(penalty_variant(scene, "rk8pd", c_N, 1e-11), std::nullopt);
     INFO("c_N = " << c_N);
     CHECK(p.errors.sup_u == Approx(std::numbers::pi / std::sqrt(c_N)).epsilon(1e-3));
   }
 }
 
 TEST_CASE("work_precision: timing and cost-to-reach helpers", "[work_precision]") {
-  const Scene scene =
-      load_scene(kDir + kSceneFiles.at("figure3_no_cor"), {"time.h=1e-2", "method.name=direct"});
+  Scene scene = scene_named("figure3_no_cor");
+  scene.grid = Grid::covering(scene.T, 1e-2);
   TimingRule rule;
   rule.budget_seconds = 0.01;
   const SolveCost cost =

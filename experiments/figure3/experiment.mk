@@ -10,5 +10,5 @@ $(figure3_OUTPUTS) &: experiments/figure3/plot.gp $(figure3_SCENES) $(IMPACT) $(
 	for scene in no_cor cor075; do for method in direct fb_newton exact; do \
 	  $(IMPACT) run experiments/figure3/$$scene.toml --set method.name=$$method --quiet \
 	    --out $(RESULTS)/figure3/$${scene}_$$method.csv || exit 1; done; done
-	$(figure3_DRIVER) experiments/figure3 $(RESULTS)/figure3
+	$(figure3_DRIVER) $(RESULTS)/figure3
 	gnuplot -e "results='$(RESULTS)/figure3'" experiments/figure3/plot.gp

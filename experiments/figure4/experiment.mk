@@ -10,7 +10,7 @@ $(figure4_OUTPUTS) &: experiments/figure4/plot.gp $(figure4_SCENES) $(IMPACT) $(
 	for scene in no_cor cor075; do for method in direct fb_newton exact; do \
 	  $(IMPACT) run experiments/figure4/$$scene.toml --set method.name=$$method --quiet \
 	    --out $(RESULTS)/figure4/$${scene}_$$method.csv || exit 1; done; done
-	$(figure4_DRIVER) experiments/figure4 $(RESULTS)/figure4
+	$(figure4_DRIVER) $(RESULTS)/figure4
 	$(IMPACT) sweep experiments/figure4/no_cor.toml --vary time.h=1e-4:1e-2:41:log \
 	  --summary rest_time,E_T,impacts --quiet --out $(RESULTS)/figure4/h_sweep_cli.csv
 	gnuplot -e "results='$(RESULTS)/figure4'" experiments/figure4/plot.gp

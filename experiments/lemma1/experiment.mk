@@ -7,5 +7,5 @@ lemma1_SCENES := experiments/figure3/no_cor.toml experiments/figure3/cor075.toml
 lemma1_OUTPUTS := figures/lemma1.png figures/lemma1.svg $(RESULTS)/lemma1/summary.toml
 $(lemma1_OUTPUTS) &: experiments/lemma1/plot.gp $(lemma1_DRIVER) $(lemma1_SCENES)
 	@mkdir -p $(RESULTS)/lemma1 figures
-	$(lemma1_DRIVER) $(CURDIR) $(RESULTS)/lemma1
+	$(lemma1_DRIVER) $(RESULTS)/lemma1
 	gnuplot -e "results='$(RESULTS)/lemma1'" experiments/lemma1/plot.gp

@@ -1,4 +1,4 @@
-# Throughput (issue 4): `make performance` runs the Google Benchmark micro-benchmarks and plots
+# Throughput: `make performance` runs the Google Benchmark micro-benchmarks and plots
 # figures/performance.png. Not part of `make all`: it measures this machine (about 3 minutes of
 # repetitions) rather than reproducing the paper. Google Benchmark (libbenchmark-dev) is added to
 # the packages `make deps` installs, for this target only.

@@ -1,4 +1,4 @@
-// Throughput of the solvers (issue 4), with Google Benchmark. CPU time of the solve alone, output
+// Throughput of the solvers, with Google Benchmark. CPU time of the solve alone, output
 // off, after a warm-up, repeated; the minimum and the median over the repetitions are reported.
 //   stepper/<method>/<scene>   ns per step through simulate() (as `impact run` calls it), for
 //                              direct, moreau_jean, fb_newton, penalty (per grid step and per ODE
@@ -22,7 +22,6 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -31,6 +30,8 @@
 #include <utility>
 #include <vector>
 
+#include "analysis/experiment.hpp"
+#include "analysis/markdown.hpp"
 #include "impact/ensemble.hpp"
 #include "impact/output.hpp"
 #include "impact/registry.hpp"
@@ -45,8 +46,15 @@ using namespace impact;
 
 constexpr int kRepetitions = 5;
 
-std::string scene_path(const std::string& name) {
-  return std::string(IMPACT_SOURCE_DIR) + "/experiments/" + name + ".toml";
+const impact::Experiment kPerformance{
+    "performance", "Throughput of the solvers, the ensemble and impact run (Google Benchmark)",
+    nullptr};
+const impact::ExperimentContext kSource{IMPACT_SOURCE_DIR, ""};
+
+// experiments/<scene>.toml
+std::string scene_path(const std::string& scene) {
+  const auto slash = scene.find('/');
+  return kSource.scene_path(scene.substr(0, slash), scene.substr(slash + 1) + ".toml");
 }
 
 // The paper's scenes (Section 5): "figure3/no_cor" is f = 0 with one impact (almost every step
@@ -78,14 +86,15 @@ void add_statistics(benchmark::internal::Benchmark* b, bool process = false) {
     b->MinWarmUpTime(0.05)->MinTime(0.2);
 }
 
-// One full run of the scene per iteration, output off (the observer does nothing).
-void register_stepper(const std::string& method, const std::string& scene, double h,
-                      const std::vector<std::string>& extra = {}, const std::string& tag = "") {
-  std::vector<std::string> overrides{"method.name=" + method, "time.h=" + impact::round_trip(h)};
-  overrides.insert(overrides.end(), extra.begin(), extra.end());
-  const Scene s = load_scene(scene_path(scene), overrides);
-  const std::string name =
-      "stepper/" + method + (tag.empty() ? "" : "_" + tag) + "/" + label(scene);
+// One full run of the scene with these method parameters and step per iteration, output off (the
+// observer does nothing).
+void register_stepper(const MethodParams& method, const std::string& scene, double h,
+                      const std::string& tag = "") {
+  Scene s = load_scene(scene_path(scene));
+  s.method = method;
+  s.grid = Grid::covering(s.T, h);
+  const std::string name = "stepper/" + std::string(method_name(method)) +
+                           (tag.empty() ? "" : "_" + tag) + "/" + label(scene);
   auto* b = benchmark::RegisterBenchmark(name.c_str(), [s](benchmark::State& state) {
     RunSummary summary;
     for (auto _ : state) {
@@ -198,7 +207,7 @@ void register_cli(const std::string& cli, const std::string& out_dir, const std:
                                 "--set",
                                 "method.name=" + method,
                                 "--set",
-                                "time.h=" + impact::round_trip(T / static_cast<double>(steps)),
+                                "time.h=" + round_trip(T / static_cast<double>(steps)),
                                 "--set",
                                 "output.every=" + std::to_string(every),
                                 "--quiet",
@@ -257,12 +266,11 @@ Quantity quantity_of(const std::string& name) {
   return {"s_per_step", "ns/step", 1e9};
 }
 
-void write_results(const std::string& dir, const Collector& collector) {
-  std::ofstream csv(dir + "/benchmarks.csv");
-  csv << "benchmark,quantity,unit,best,median\n";
+// The best and median of each benchmark: benchmarks.csv, table.md and summary.toml.
+void write_tables(const std::string& dir, const Collector& collector) {
+  std::string csv = "benchmark,quantity,unit,best,median\n";
+  std::string md = "| benchmark | unit | best | median |\n| --- | --- | ---: | ---: |\n";
   toml::table summary;
-  std::ofstream md(dir + "/table.md");
-  md << "| benchmark | unit | best | median |\n| --- | --- | ---: | ---: |\n";
   for (const auto& [name, r] : collector.results()) {
     const Quantity q = quantity_of(name);
     const auto value = [&](const std::map<std::string, double>& m, const std::string& key) {
@@ -273,12 +281,10 @@ void write_results(const std::string& dir, const Collector& collector) {
     const bool rate = q.key == "particle_steps_per_s";
     const double best = rate ? value(r.max, q.key) : value(r.min, q.key);
     const double median = value(r.median, q.key);
-    csv << name << "," << q.key << "," << q.unit << "," << impact::round_trip(best) << ","
-        << impact::round_trip(median) << "\n";
-    char line[256];
-    std::snprintf(line, sizeof line, "| `%s` | %s | %.4g | %.4g |\n", name.c_str(), q.unit.c_str(),
-                  best, median);
-    md << line;
+    csv += name + "," + q.key + "," + q.unit + "," + round_trip(best) + "," + round_trip(median) +
+           "\n";
+    md += "| `" + name + "` | " + q.unit + " | " + short_number(best) + " | " +
+          short_number(median) + " |\n";
     toml::table entry{{"unit", q.unit}, {"best", best}, {"median", median}};
     if (r.median.count("s_per_iteration"))
       entry.insert("ns_per_ode_step_median", r.median.at("s_per_iteration") * 1e9);
@@ -286,41 +292,44 @@ void write_results(const std::string& dir, const Collector& collector) {
       entry.insert("contact_fraction", r.median.at("contact_fraction"));
     summary.insert(name, entry);
   }
-  std::ofstream(dir + "/summary.toml") << summary << "\n";
+  write_text_file(dir + "/benchmarks.csv", csv);
+  write_text_file(dir + "/table.md", md);
+  write_text_file(dir + "/summary.toml", summary_text(kPerformance, summary));
+}
 
-  // For plot.gp: ns per step in-process and through `impact run` (1e8 steps, 1e7 for
-  // fb_newton) with the issue's targets, and the ensemble's throughput.
+// For plot.gp: ns per step in-process and through `impact run` (1e8 steps, 1e7 for fb_newton)
+// with the targets, and the ensemble's throughput.
+void write_plot_data(const std::string& dir, const Collector& collector) {
+  const auto& results = collector.results();
   const auto best = [&](const std::string& name, double scale) {
-    const auto it = collector.results().find(name);
-    if (it == collector.results().end()) return std::nan("");
+    const auto it = results.find(name);
+    if (it == results.end()) return std::nan("");
     const auto& m = it->second.min;
     const auto key = m.find(quantity_of(name).key);
     return key == m.end() ? std::nan("") : key->second * scale;
   };
-  std::ofstream steps(dir + "/plot_steps.csv");
-  steps << "case,in-process,impact run,target\n";
+  std::string steps = "case,in-process,impact run,target\n";
   for (const auto& [method, target, cli_steps] :
        {std::tuple{"direct", 3.0, "100000000"}, std::tuple{"moreau_jean", 4.0, "100000000"},
         std::tuple{"fb_newton", 60.0, "10000000"}})
     for (const auto& scene : kScenes)
-      steps << method << " " << scene << ","
-            << impact::round_trip(best("stepper/" + std::string(method) + "/" + label(scene), 1e9))
-            << ","
-            << impact::round_trip(
-                   best("cli/" + std::string(method) + "/" + label(scene) + "/" + cli_steps, 1e9))
-            << "," << impact::round_trip(target) << "\n";
-  std::ofstream ensemble(dir + "/plot_ensemble.csv");
-  ensemble << "case,T = 10 s sweep,settled (subnormal v)\n";
-  for (const auto& [name, r] : collector.results())
+      steps += std::string(method) + " " + scene + "," +
+               round_trip(best("stepper/" + std::string(method) + "/" + label(scene), 1e9)) + "," +
+               round_trip(
+                   best("cli/" + std::string(method) + "/" + label(scene) + "/" + cli_steps, 1e9)) +
+               "," + round_trip(target) + "\n";
+  write_text_file(dir + "/plot_steps.csv", steps);
+  std::string ensemble = "case,T = 10 s sweep,settled (subnormal v)\n";
+  for (const auto& [name, r] : results)
     if (name.rfind("ensemble/", 0) == 0) {
-      const auto settled = collector.results().find("ensemble_settled/" + name.substr(9));
-      ensemble << name.substr(9) << "," << impact::round_trip(r.max.at("particle_steps_per_s"))
-               << ","
-               << impact::round_trip(settled == collector.results().end()
-                                         ? std::nan("")
-                                         : settled->second.max.at("particle_steps_per_s"))
-               << "\n";
+      const auto settled = results.find("ensemble_settled/" + name.substr(9));
+      ensemble +=
+          name.substr(9) + "," + round_trip(r.max.at("particle_steps_per_s")) + "," +
+          round_trip(settled == results.end() ? std::nan("")
+                                              : settled->second.max.at("particle_steps_per_s")) +
+          "\n";
     }
+  write_text_file(dir + "/plot_ensemble.csv", ensemble);
 }
 
 }  // namespace
@@ -341,16 +350,13 @@ int main(int argc, char** argv) {
   // Steps of 1e-6 s: 1e7 steps over T = 10 s, enough that the loop, not the setup, is timed.
   for (const auto& scene : kScenes) {
     for (const char* method : {"direct", "moreau_jean", "exact"})
-      register_stepper(method, scene, 1e-6);
-    register_stepper("fb_newton", scene, 1e-5);
+      register_stepper(find_method(method)->defaults, scene, 1e-6);
+    register_stepper(find_method("fb_newton")->defaults, scene, 1e-5);
   }
   // Normal compliance (f = 0 scene only: it takes no COR) with an explicit and an implicit GSL
   // stepper; its cost is per ODE step, the grid h only sets where it reports.
   for (const char* stepper : {"rk8pd", "msbdf"})
-    register_stepper("penalty", "figure3/no_cor", 1e-3,
-                     {std::string("method.stepper=") + stepper, "method.stiffness=1e6",
-                      "method.rtol=1e-8", "method.atol=1e-10"},
-                     stepper);
+    register_stepper(PenaltyParams{1e6, stepper, 1e-8, 1e-10}, "figure3/no_cor", 1e-3, stepper);
   register_exact_impacts();
   for (const auto isa : Ensemble::supported_instruction_sets()) {
     for (const bool settled : {false, true}) {
@@ -373,6 +379,7 @@ int main(int argc, char** argv) {
   Collector collector;
   benchmark::RunSpecifiedBenchmarks(&collector);
   benchmark::Shutdown();
-  write_results(dir, collector);
+  write_tables(dir, collector);
+  write_plot_data(dir, collector);
   return 0;
 }

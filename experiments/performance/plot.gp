@@ -1,7 +1,7 @@
-# Throughput (issue 4). Reads results/performance/ (exp_performance), writes
+# Throughput. Reads results/performance/ (exp_performance), writes
 # figures/performance.{png,svg}: (a) ns per step of each time-stepper on the paper's scenes, in
 # the benchmark (simulate(), output off) and through `impact run` (a process, a scene file, CSV
-# decimated to ~1e4 rows), against the issue's targets; (b) the ensemble's particle-steps per
+# decimated to ~1e4 rows), against the throughput targets; (b) the ensemble's particle-steps per
 # second for each vector instruction set, against the target of 1e9.
 # Usage: gnuplot -e "results='results/performance'" experiments/performance/plot.gp
 if (!exists("results")) results = 'results/performance'

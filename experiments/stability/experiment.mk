@@ -1,6 +1,6 @@
-# Numerical stability on stiff and extreme cases (issue 5): every method over h = 1e-9..1 on the
+# Numerical stability on stiff and extreme cases: every method over h = 1e-9..1 on the
 # extreme cases, fb_newton over its smoothing parameter, penalty over c_N and its GSL steppers.
-# The driver also rewrites the table in experiments/stability/README.md (between its markers).
+# The tables of the extreme cases go to $(RESULTS)/stability/table.md.
 EXPERIMENTS += stability
 stability_DRIVER := $(BUILD)/experiments/stability/exp_stability
 stability_OUTPUTS := figures/stability_map.png figures/stability_map.svg \
@@ -8,5 +8,5 @@ stability_OUTPUTS := figures/stability_map.png figures/stability_map.svg \
     figures/stability_stiff.svg $(RESULTS)/stability/summary.toml
 $(stability_OUTPUTS) &: experiments/stability/plot.gp $(stability_DRIVER)
 	@mkdir -p $(RESULTS)/stability figures
-	$(stability_DRIVER) $(RESULTS)/stability experiments/stability/README.md
+	$(stability_DRIVER) $(RESULTS)/stability
 	gnuplot -e "results='$(RESULTS)/stability'" experiments/stability/plot.gp

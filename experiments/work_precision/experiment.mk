@@ -1,4 +1,4 @@
-# Work against precision (issue 4): every method's error against `exact` and the CPU time of its
+# Work against precision: every method's error against `exact` and the CPU time of its
 # solve, over 4 decades of h (or 8 of tolerance), on the paper's Figure 3 and 4 scenes and an
 # off-grid one; Siconos's Moreau-Jean too when it is installed (libsiconos-kernel-dev).
 EXPERIMENTS += work_precision

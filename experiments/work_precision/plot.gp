@@ -1,4 +1,4 @@
-# Work-precision diagrams (issue 4). Reads results/work_precision/ (exp_work_precision), writes
+# Work-precision diagrams. Reads results/work_precision/ (exp_work_precision), writes
 #   figures/work_precision.{png,svg}          the main diagram: sup |u_h - u| against CPU time on
 #                                             each scene, and the mechanism of direct's stall
 #   figures/work_precision_<scene>.{png,svg}  every error measure against CPU time (top row) and

@@ -1,6 +1,7 @@
 #include "siconos_ball.hpp"
 
 #include <SiconosKernel.hpp>
+#include <stdexcept>
 
 namespace impact {
 
@@ -9,6 +10,7 @@ struct SiconosBall::Impl {
   SP::TimeStepping simulation;
   SP::SiconosVector q, v, p;
   double h;
+  bool started = false;
 };
 
 SiconosBall::SiconosBall(const Model& model, const State& initial, double h, std::int64_t steps)
@@ -48,8 +50,14 @@ SiconosBall::SiconosBall(const Model& model, const State& initial, double h, std
   impl_->h = h;
 }
 
-StepInfo SiconosBall::step(State& s, std::int64_t) {
+void SiconosBall::initialize(const State&, std::int64_t l) {
+  if (l != 0 || impl_->started)
+    throw std::logic_error("SiconosBall: a simulation runs once, from the state it was built with");
+}
+
+StepInfo SiconosBall::do_step(State& s, std::int64_t) {
   Impl& m = *impl_;
+  m.started = true;
   m.simulation->computeOneStep();
   s.u = (*m.q)(0);
   s.v = (*m.v)(0);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "analysis/tolerances.hpp"
 #include "impact/run.hpp"
 
 namespace impact {
@@ -15,7 +16,7 @@ constexpr double kEps = std::numeric_limits<double>::epsilon();
 // What measure_lemma3 keeps of each step until the maxima that set the tolerances are known.
 struct StepRecord {
   double energy_increase;   // E^{l+1} - E^l
-  double rebound_roundoff;  // the contact-step part of the energy tolerance, 0 in free flight
+  double rebound_roundoff;  // rebound_energy_roundoff (tolerances.hpp), 0 in free flight
   double printed_4_7_gap;   // |u^{l+1}| - (|u^0| + (1/2) h sum_{k=1..l+1} |v^k|)
 };
 
@@ -46,9 +47,8 @@ Lemma3Measurement measure_lemma3(AnyStepper& stepper, const Model& model, const 
     half_path += 0.5 * grid.h * std::fabs(s.v);
     const double N = info.contact_force;
     m.impulse += grid.h * N;
-    const double ulp_u = kEps * std::fmax(std::fabs(previous.u), std::fabs(model.phi));
     records.push_back({energy(model, s) - energy(model, previous),
-                       N > 0 ? 4 * std::fabs(s.v) * ulp_u / grid.h : 0.0,
+                       rebound_energy_roundoff(model.phi, grid.h, previous.u, s.v, N),
                        std::fabs(s.u) - (std::fabs(initial.u) + half_path)});
     previous = s;
   });
@@ -57,10 +57,9 @@ Lemma3Measurement measure_lemma3(AnyStepper& stepper, const Model& model, const 
   m.velocity_change = previous.v - initial.v;
 
   const double F = std::fabs(model.f), T = m.T;
-  // Round-off of u (and of the free-flight part of E): see measure_lemma3 in bounds.hpp.
+  // Round-off of u: the terms of the free flight, as in energy_evaluation_roundoff.
   const double u_roundoff = 16 * kEps * (m.max_u + T * m.max_v + T * T * F);
-  const double energy_roundoff =
-      16 * kEps * (m.max_v * m.max_v + F * (m.max_u + T * m.max_v + T * T * F));
+  const double energy_roundoff = energy_evaluation_roundoff(model.f, T, m.max_u, m.max_v);
   for (const StepRecord& r : records) {
     const double tolerance = energy_roundoff + r.rebound_roundoff;
     m.energy_increases += r.energy_increase > 0;

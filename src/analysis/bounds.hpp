@@ -50,12 +50,8 @@ struct Lemma3Measurement {
 // Runs the stepper from `initial` over `grid` (streaming; three numbers per step are kept for the
 // checks, whose tolerances need the run's maxima) and measures the quantities above.
 //
-// Round-off tolerance of the energy check, the one of tests/test_schemes.cpp: E = v^2/2 - f u is
-// evaluated from the free flight u_a + t (v_a + t f/2), v_a + t f (free_flight.hpp), whose terms
-// reach max|u| + T max|v| + T^2 |f|, so E carries an error of a few eps (max|v|^2 + |f| (max|u| +
-// T max|v| + T^2 |f|)); we allow 16 of them. On a contact step the rebound velocity
-// 2 (phi - u^l)/h - v^l (5-1) carries the rounding of u^l (one ulp of max(|u^l|, |phi|))
-// multiplied by 2/h, which changes v^2/2 by up to 2 |v^{l+1}| ulp / h; we allow twice that.
+// Round-off tolerance of the energy check, energy_roundoff(l): energy_evaluation_roundoff at T with
+// the run's max|u| and max|v|, plus rebound_energy_roundoff on a contact step (tolerances.hpp).
 Lemma3Measurement measure_lemma3(AnyStepper& stepper, const Model& model, const State& initial,
                                  const Grid& grid);
 

@@ -23,6 +23,7 @@ OrderFit fit_order(std::span<const double> h, std::span<const double> err) {
   gsl_fit_linear(x.data(), 1, y.data(), 1, x.size(), &c0, &c1, &cov00, &cov01, &cov11, &sumsq);
   fit.order = c1;
   fit.log_constant = c0;
+  if (x.size() > 2) fit.order_standard_error = std::sqrt(cov11);
   fit.h_min = std::exp(*std::min_element(x.begin(), x.end()));
   fit.h_max = std::exp(*std::max_element(x.begin(), x.end()));
   for (std::size_t i = 0; i < x.size(); ++i)

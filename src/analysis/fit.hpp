@@ -15,6 +15,9 @@ struct OrderFit {
   double h_min = 0, h_max = 0;
   std::size_t points = 0;
   double max_log_deviation = 0;  // max |log err - fit| over the points: how straight the line is
+  // The standard error of the order from the scatter of the points about the line (GSL's
+  // covariance of the slope; NaN with fewer than three points): how well the points fix it.
+  double order_standard_error = std::numeric_limits<double>::quiet_NaN();
 };
 OrderFit fit_order(std::span<const double> h, std::span<const double> err);
 

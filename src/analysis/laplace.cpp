@@ -1,19 +1,14 @@
 #include "analysis/laplace.hpp"
 
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_integration.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <memory>
 #include <stdexcept>
 #include <string>
 
-#include "impact/gsl_errors.hpp"
-#include "impact/registry.hpp"
+#include "analysis/quadrature.hpp"
+#include "impact/output.hpp"
 #include "impact/run.hpp"
-#include "scene/read_scene.hpp"
 
 namespace impact {
 
@@ -30,28 +25,9 @@ constexpr double kNegligibleExponent = 60.0;
 // but e^1000 < 1e-45 of its speed after 500 impacts.
 constexpr std::int64_t kMaxBreakpoints = 500;
 
-// GSL_EROUND means that round-off stopped the refinement before kEpsRel was met: the result is then
-// as good as double precision allows and its error estimate is reported in abserr, so it is kept.
-void check_gsl(int status, const char* what) {
-  if (status != GSL_SUCCESS && status != GSL_EROUND)
-    throw std::runtime_error(std::string("laplace_transform: ") + what + ": " +
-                             gsl_strerror(status));
-}
-
-struct WorkspaceDeleter {
-  void operator()(gsl_integration_workspace* w) const { gsl_integration_workspace_free(w); }
-};
-using Workspace = std::unique_ptr<gsl_integration_workspace, WorkspaceDeleter>;
-
-Workspace make_workspace() {
-  Workspace w(gsl_integration_workspace_alloc(kLimit));
-  if (!w) throw std::runtime_error("laplace_transform: gsl_integration_workspace_alloc failed");
-  return w;
-}
-
 void check_arguments(double s) {
   if (!(s > 0) || !std::isfinite(s))
-    throw std::invalid_argument("laplace_transform needs a finite s > 0, got " + std::to_string(s));
+    throw std::invalid_argument("laplace_transform needs a finite s > 0, got " + round_trip(s));
 }
 
 // Neumaier's compensated sum: a transform of 40000 samples adds 40000 pieces, whose plain sum
@@ -72,22 +48,18 @@ class CompensatedSum {
 // The integrand of one piece in the local time r = t - a: w(a + r) e^{-sr}. The factor e^{-sa} is
 // applied to the piece's integral, so that every piece is integrated to a relative accuracy.
 struct Shifted {
-  const std::function<double(double)>* w;
+  const std::function<double(double)>& w;
   double a, s;
-  static double eval(double r, void* p) {
-    const auto& x = *static_cast<const Shifted*>(p);
-    const double decay = std::exp(-x.s * r);
-    return decay == 0.0 ? 0.0 : (*x.w)(x.a + r) * decay;
+  double operator()(double r) const {
+    const double decay = std::exp(-s * r);
+    return decay == 0.0 ? 0.0 : w(a + r) * decay;
   }
 };
 
 // The interpolant on one step in the local time r in [0, h]: w0 + slope r, times e^{-sr}.
 struct Line {
   double w0, slope, s;
-  static double eval(double r, void* p) {
-    const auto& x = *static_cast<const Line*>(p);
-    return (x.w0 + x.slope * r) * std::exp(-x.s * r);
-  }
+  double operator()(double r) const { return (w0 + slope * r) * std::exp(-s * r); }
 };
 
 }  // namespace
@@ -99,8 +71,7 @@ LaplaceValue laplace_transform(const std::function<double(double)>& w,
   std::sort(breakpoints.begin(), breakpoints.end());
   breakpoints.erase(std::unique(breakpoints.begin(), breakpoints.end()), breakpoints.end());
 
-  GslErrorsAsStatus errors_as_status;
-  Workspace workspace = make_workspace();
+  Quadrature quadrature(kLimit);
   LaplaceValue out;
   CompensatedSum value;
   // Each piece is integrated in its local time and scaled by e^{-sa}; it is asked for kEpsRel
@@ -109,19 +80,14 @@ LaplaceValue laplace_transform(const std::function<double(double)>& w,
   auto integrate = [&](double a, double b) {
     const double scale = std::exp(-s * a);
     if (scale == 0.0) return false;  // this piece and all later ones underflow
-    Shifted piece{&w, a, s};
-    gsl_function F{&Shifted::eval, &piece};
-    const double epsabs = kEpsRel * std::fabs(value.value()) / scale;
-    double result = 0, abserr = 0;
-    const std::string where = "on [" + std::to_string(a) + ", " + std::to_string(b) + "]";
-    if (std::isinf(b))
-      check_gsl(gsl_integration_qagiu(&F, 0.0, epsabs, kEpsRel, kLimit, workspace.get(), &result,
-                                      &abserr),
-                ("gsl_integration_qagiu " + where).c_str());
-    else
-      check_gsl(gsl_integration_qag(&F, 0.0, b - a, epsabs, kEpsRel, kLimit, GSL_INTEG_GAUSS21,
-                                    workspace.get(), &result, &abserr),
-                ("gsl_integration_qag " + where).c_str());
+    Shifted piece{w, a, s};
+    const Quadrature::Rule rule{kEpsRel * std::fabs(value.value()) / scale, kEpsRel,
+                                GSL_INTEG_GAUSS21};
+    const std::string what = "laplace_transform on [" + round_trip(a) + ", " + round_trip(b) + "]";
+    double abserr = 0;
+    const double result = std::isinf(b)
+                              ? quadrature.integrate_to_infinity(piece, 0.0, rule, what, &abserr)
+                              : quadrature.integrate(piece, 0.0, b - a, {}, rule, what, &abserr);
     value.add(scale * result);
     out.abserr += scale * abserr;
     return true;
@@ -147,8 +113,7 @@ LaplaceValue laplace_transform_samples(std::span<const double> samples, double h
   const auto negligible = static_cast<std::size_t>(std::ceil(kNegligibleExponent / (s * h)));
   const std::size_t stop = std::min(n, negligible);
 
-  GslErrorsAsStatus errors_as_status;
-  Workspace workspace = make_workspace();
+  Quadrature quadrature(kLimit);
   LaplaceValue out;
   CompensatedSum value;
   for (std::size_t l = 0; l < stop; ++l) {
@@ -156,14 +121,13 @@ LaplaceValue laplace_transform_samples(std::span<const double> samples, double h
     Line line = interpolation == Interpolation::linear
                     ? Line{samples[l], (w_next - samples[l]) / h, s}
                     : Line{w_next, 0.0, s};
-    gsl_function F{&Line::eval, &line};
-    double result = 0, abserr = 0;
     // t_l = l h exactly, as on the solvers' grid (model.hpp).
     const double scale = std::exp(-s * (static_cast<double>(l) * h));
-    const double epsabs = kEpsRel * std::fabs(value.value()) / scale;
-    check_gsl(gsl_integration_qag(&F, 0.0, h, epsabs, kEpsRel, kLimit, GSL_INTEG_GAUSS15,
-                                  workspace.get(), &result, &abserr),
-              "gsl_integration_qag");
+    const Quadrature::Rule rule{kEpsRel * std::fabs(value.value()) / scale, kEpsRel,
+                                GSL_INTEG_GAUSS15};
+    double abserr = 0;
+    const double result =
+        quadrature.integrate(line, 0.0, h, {}, rule, "laplace_transform_samples", &abserr);
     value.add(scale * result);
     out.abserr += scale * abserr;
   }
@@ -225,9 +189,7 @@ Lemma1Point lemma1_samples(std::span<const double> energies, double h, Interpola
           s * L.abserr / scale, s * L.tail_bound / scale};
 }
 
-std::vector<double> energy_samples(const std::string& scene_path,
-                                   const std::vector<std::string>& overrides) {
-  const Scene scene = load_scene(scene_path, overrides);
+std::vector<double> energy_samples(const Scene& scene) {
   AnyStepper stepper = make_stepper(scene);
   std::vector<double> energies;
   energies.reserve(static_cast<std::size_t>(scene.grid.steps) + 1);
@@ -235,40 +197,6 @@ std::vector<double> energy_samples(const std::string& scene_path,
     energies.push_back(energy(scene.model, s));
   });
   return energies;
-}
-
-std::vector<Lemma1Case> lemma1_cases() {
-  const std::string T = "time.T=" + std::to_string(kLemma1SchemeT);
-  return {
-      {"exact_f0_elastic", "figure3/no_cor.toml", {}, true},
-      {"exact_f0_cor075", "figure3/cor075.toml", {}, true},
-      {"exact_gravity_elastic", "figure4/no_cor.toml", {}, true},
-      {"exact_gravity_cor075", "figure4/cor075.toml", {}, true},
-      {"exact_gravity_plastic", "figure4/no_cor.toml", {"floor.cor=0.0"}, true},
-      {"direct_f0_no_cor", "figure3/no_cor.toml", {T}, false},
-      {"direct_f0_no_cor_h0012", "figure3/no_cor.toml", {T, "time.h=0.0012"}, false},
-      {"direct_f0_cor075", "figure3/cor075.toml", {T}, false},
-      {"direct_gravity_no_cor", "figure4/no_cor.toml", {T}, false},
-      {"direct_gravity_cor075", "figure4/cor075.toml", {T}, false},
-  };
-}
-
-std::vector<Lemma1Point> lemma1_run(const Lemma1Case& c, const std::string& source_dir,
-                                    Interpolation interpolation) {
-  const std::string path = source_dir + "/experiments/" + c.scene;
-  const Scene scene = load_scene(path, c.overrides);
-  std::vector<Lemma1Point> points;
-  if (c.exact) {
-    for (double s : kLemma1S) points.push_back(lemma1_exact(scene.model, scene.initial, s));
-    return points;
-  }
-  if (scene.model.f > 0)
-    throw std::invalid_argument("lemma1_run: no bound on E beyond T for f > 0 (" + path + ")");
-  const std::vector<double> E = energy_samples(path, c.overrides);
-  const double tail_sup = std::fmax(std::fabs(E[0]), std::fabs(scene.model.f * scene.model.phi));
-  for (double s : kLemma1S)
-    points.push_back(lemma1_samples(E, scene.grid.h, interpolation, s, tail_sup));
-  return points;
 }
 
 }  // namespace impact

@@ -7,15 +7,14 @@
 // on [0, n h] plus a bound on the part beyond n h, where the samples say nothing.
 #pragma once
 
-#include <array>
-#include <cmath>
+#include <cstdint>
 #include <functional>
 #include <span>
-#include <string>
 #include <vector>
 
 #include "impact/exact.hpp"
 #include "impact/model.hpp"
+#include "impact/scene.hpp"
 
 namespace impact {
 
@@ -26,8 +25,8 @@ struct LaplaceValue {
 };
 
 // w smooth between the breakpoints (its jumps and kinks, in any order; those outside (0, inf)
-// are ignored): gsl_integration_qag on each piece between consecutive breakpoints, and
-// gsl_integration_qagiu from the last one to infinity. w is not evaluated where e^{-st}
+// are ignored): QAG (GK21) on each piece between consecutive breakpoints, and QAGIU from the last
+// one to infinity (analysis/quadrature.hpp). w is not evaluated where e^{-st}
 // underflows to 0, so it may be undefined (or overflow) for huge t. Needs s > 0.
 LaplaceValue laplace_transform(const std::function<double(double)>& w,
                                std::vector<double> breakpoints, double s);
@@ -38,8 +37,8 @@ enum class Interpolation {
   linear,              // the straight line through (t_l, w_l) and (t_{l+1}, w_{l+1})
 };
 
-// Transform of the interpolant of w_0..w_n (grid t_l = l h) on [0, t_stop], with
-// gsl_integration_qag on each step, where t_stop = n h, or the first grid time with s t >= 60
+// Transform of the interpolant of w_0..w_n (grid t_l = l h) on [0, t_stop], with QAG (GK15) on
+// each step, where t_stop = n h, or the first grid time with s t >= 60
 // (e^{-60} < 1e-26) if that comes first. tail_bound = sup |w| e^{-s t_stop} / s, where sup is the
 // larger of `tail_sup` (a bound on |w(t)| for t > n h that the caller knows, e.g. E^0 from the
 // energy inequality of Lemma 3) and the samples after t_stop. Needs s > 0, h > 0 and at least two
@@ -86,38 +85,7 @@ Lemma1Point lemma1_exact(const Model& model, const State& initial, double s);
 Lemma1Point lemma1_samples(std::span<const double> energies, double h, Interpolation interpolation,
                            double s, double tail_sup);
 
-// The energies E^l = E(l h), l = 0..n, of a run of the scene's method (with `overrides` applied).
-std::vector<double> energy_samples(const std::string& scene_path,
-                                   const std::vector<std::string>& overrides);
-
-// The cases of the Lemma 1 experiment (experiments/lemma1), shared with tests/test_lemma1.cpp.
-inline constexpr std::array<double, 19> kLemma1S = {
-    1.1, 1.5, 2.0, 2.5, 3.0, 3.5, 4.0, 4.5, 5.0, 5.5, 6.0, 6.5, 7.0, 7.5, 8.0, 8.5, 9.0, 9.5, 10.0};
-// The schemes run to T = 40: what is left out is at most |E|max e^{-40 s} / s, relative e^{-44}
-// ~ 1e-19 at s = 1.1.
-inline constexpr double kLemma1SchemeT = 40.0;
-// "Holds to quadrature accuracy": every |deviation| below this, ten times the relative accuracy
-// asked of GSL on each piece (1e-12, laplace.cpp) and 5e4 times the round-off of E (eps). The
-// cases that hold measure <= 4.4e-16; those that fail measure >= 1.8e-3 at s = 1.1.
-inline constexpr double kLemma1HoldsThreshold = 1e-11;
-
-struct Lemma1Case {
-  std::string name;                    // key in summary.toml and column in deviation.csv
-  std::string scene;                   // scene file under experiments/
-  std::vector<std::string> overrides;  // applied to the scene
-  bool exact;  // the exact solution, transformed to infinity; else the scene's method on [0, 40]
-};
-
-// Exact: Figure 3 data (f = 0) elastic and COR 0.75; Figure 4 data (f = -9.80665) elastic, COR
-// 0.75 and plastic (COR 0). Direct scheme: the four scenes of Figures 3 and 4, plus Figure 3
-// without COR at h = 0.0012, where the impact falls between grid points.
-std::vector<Lemma1Case> lemma1_cases();
-
-// Lemma 1 for one case at each s of kLemma1S; `source_dir` is the package root. For a scheme the
-// samples are interpolated as asked, and |E| after T is bounded by max(|E^0|, |f phi|): for f <= 0
-// E >= -f phi (u >= phi) and E^{l+1} <= E^l ((4-6); a COR reset v = -e v^l does not raise E either
-// when f <= 0). Throws std::invalid_argument for a scheme case with f > 0.
-std::vector<Lemma1Point> lemma1_run(const Lemma1Case& c, const std::string& source_dir,
-                                    Interpolation interpolation);
+// The energies E^l = E(l h), l = 0..n, of a run of the scene's method.
+std::vector<double> energy_samples(const Scene& scene);
 
 }  // namespace impact

@@ -55,12 +55,13 @@ void compare(const std::string& key, const toml::node& measured, const toml::nod
   if (reference.is_array()) {
     const toml::array* m = measured.as_array();
     const toml::array& r = *reference.as_array();
-    if (!m || m->size() != r.size()) {
+    const bool prefix = m && rule.measured_prefix && m->size() < r.size();
+    if (!m || (m->size() != r.size() && !prefix)) {
       out.push_back(key + ": measured " + (m ? std::to_string(m->size()) : "no") +
                     " elements, reference " + std::to_string(r.size()));
       return;
     }
-    for (std::size_t i = 0; i < r.size(); ++i)
+    for (std::size_t i = 0; i < m->size(); ++i)
       compare(key + "[" + std::to_string(i) + "]", *m->get(i), *r.get(i), rule, out);
     return;
   }

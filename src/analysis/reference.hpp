@@ -20,6 +20,9 @@ struct ReferenceRule {
   std::vector<std::string> skip;
   // Compare only the keys the measured table has (a test that runs part of an experiment).
   bool measured_keys_only = false;
+  // An array measured shorter than the reference is compared with the reference's first elements
+  // (a test's cheap run over the first of the experiment's step sizes).
+  bool measured_prefix = false;
 };
 
 // Every difference, one line each ("figure3.no_cor.max_diff_u: measured 1e-08, reference

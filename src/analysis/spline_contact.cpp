@@ -1,17 +1,17 @@
 #include "analysis/spline_contact.hpp"
 
 #include <gsl/gsl_errno.h>
-#include <gsl/gsl_fit.h>
-#include <gsl/gsl_integration.h>
 
 #include <algorithm>
 #include <cmath>
 #include <iterator>
-#include <memory>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
+#include "analysis/fit.hpp"
+#include "analysis/quadrature.hpp"
+#include "analysis/test_functions.hpp"
 #include "impact/gsl_errors.hpp"
 
 namespace impact {
@@ -88,10 +88,6 @@ SplinePiece SplineImpact::right_of_knot(int k) {
   check_order(k, kSplineKnots - 1);
   const SplinePiece right[] = {SplinePiece::kS1, SplinePiece::kS2, SplinePiece::kS4};
   return right[k];
-}
-
-double SplineImpact::lemma5_force_at_offset(double r) const {
-  return std::fabs(r) < eps_ ? at_offset(2, r) / 6 : 0.0;
 }
 
 double KnotJumps::max_abs(int max_order) const {
@@ -185,40 +181,21 @@ double max_difference(const SplineImpact& formula, const NaturalCubicSpline& spl
 
 Pairing pair_with_second_derivative(const SplineImpact& spline, double weight,
                                     const std::function<double(double)>& psi) {
-  struct Integrand {
-    const SplineImpact* spline;
-    SplinePiece piece;
-    double weight;
-    const std::function<double(double)>* psi;
-    static double eval(double r, void* p) {
-      const auto* self = static_cast<const Integrand*>(p);
-      return self->weight * self->spline->piece(self->piece, 2, r) *
-             (*self->psi)(self->spline->t_star() + r);
-    }
-  };
   // Each piece's integrand is a linear function times a smooth psi over an interval of length
   // eps: the 61-point Gauss-Kronrod rule integrates it to round-off without subdividing.
-  constexpr std::size_t kLimit = 64;
-  constexpr double kRelTol = 1e-12;
-  struct WorkspaceFree {
-    void operator()(gsl_integration_workspace* w) const { gsl_integration_workspace_free(w); }
-  };
-  const GslErrorsAsStatus errors;
-  const std::unique_ptr<gsl_integration_workspace, WorkspaceFree> work(
-      gsl_integration_workspace_alloc(kLimit));
-  if (!work) throw std::runtime_error("gsl_integration_workspace_alloc failed");
+  const Quadrature::Rule rule{0.0, 1e-12, GSL_INTEG_GAUSS61};
+  Quadrature quadrature(64);
   Pairing result;
   const double eps = spline.eps();
   const std::pair<SplinePiece, std::pair<double, double>> pieces[] = {
       {SplinePiece::kS1, {-eps, 0.0}}, {SplinePiece::kS2, {0.0, eps}}};
   for (const auto& [piece, range] : pieces) {
-    Integrand integrand{&spline, piece, weight, &psi};
-    gsl_function f{&Integrand::eval, &integrand};
-    double value = 0, abserr = 0;
-    check_gsl(gsl_integration_qag(&f, range.first, range.second, 0.0, kRelTol, kLimit,
-                                  GSL_INTEG_GAUSS61, work.get(), &value, &abserr),
-              "gsl_integration_qag");
-    (piece == SplinePiece::kS1 ? result.left : result.right) = value;
+    auto integrand = [&, piece = piece](double r) {
+      return weight * spline.piece(piece, 2, r) * psi(spline.t_star() + r);
+    };
+    double abserr = 0;
+    (piece == SplinePiece::kS1 ? result.left : result.right) = quadrature.integrate(
+        integrand, range.first, range.second, {}, rule, "Lemma 5 pairing <w S'', psi>", &abserr);
     result.abserr += abserr;
   }
   return result;
@@ -229,10 +206,7 @@ std::vector<TestFunction> lemma5_test_functions(double t_star) {
   const double b = t_star + 0.2;           // bump centre
   const double p = t_star - 1;             // the cubic's expansion point
   auto gaussian = [c, w](double t) { return std::exp(-(t - c) * (t - c) / (2 * w * w)); };
-  auto bump = [b](double t) {
-    const double x = t - b;
-    return std::fabs(x) < 1 ? std::exp(-1 / (1 - x * x)) : 0.0;
-  };
+  const Bump bump{b, 1.0};
   return {
       {"gaussian", gaussian,
        [=](double t) { return ((t - c) * (t - c) / (w * w * w * w) - 1 / (w * w)) * gaussian(t); }},
@@ -240,14 +214,8 @@ std::vector<TestFunction> lemma5_test_functions(double t_star) {
       {"cubic", [p](double t) { return 1 + (t - p) * (t - p) + (t - p) * (t - p) * (t - p); },
        [p](double t) { return 2 + 6 * (t - p); }},
       {"exp", [](double t) { return std::exp(-t); }, [](double t) { return std::exp(-t); }},
-      {"bump", bump,
-       [=](double t) {
-         // b = exp(g), g = -1/(1 - x^2): b'' = (g'' + g'^2) b.
-         const double x = t - b, q = 1 - x * x;
-         if (!(q > 0)) return 0.0;
-         const double g1 = -2 * x / (q * q), g2 = -2 / (q * q) - 8 * x * x / (q * q * q);
-         return (g2 + g1 * g1) * bump(t);
-       }},
+      {"bump", [bump](double t) { return bump.value(t); },
+       [bump](double t) { return bump.second(t); }},
   };
 }
 
@@ -274,26 +242,10 @@ Lemma5Convergence lemma5_convergence(const TestFunction& psi, double t_star,
     const double p = c.psi_at_t_star;
     c.points.push_back({e, lemma5.total() / p, delta.total() / p, lemma5.left / p, lemma5.right / p,
                         c.predicted_coefficient * e * e});
-    deviations.push_back(c.points.back().ratio - 0.5);
+    deviations.push_back(std::fabs(c.points.back().ratio - 0.5));
   }
-  c.fitted_slope = fitted_log_slope(eps, deviations);
+  c.fitted_slope = fit_order(eps, deviations).order;
   return c;
-}
-
-double fitted_log_slope(const std::vector<double>& x, const std::vector<double>& y) {
-  if (x.size() != y.size() || x.size() < 2)
-    throw std::invalid_argument("fitted_log_slope needs two or more (x, y) pairs");
-  std::vector<double> lx, ly;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    lx.push_back(std::log(x[i]));
-    ly.push_back(std::log(std::fabs(y[i])));
-  }
-  double c0 = 0, c1 = 0, cov00 = 0, cov01 = 0, cov11 = 0, sumsq = 0;
-  const GslErrorsAsStatus errors;
-  check_gsl(gsl_fit_linear(lx.data(), 1, ly.data(), 1, lx.size(), &c0, &c1, &cov00, &cov01, &cov11,
-                           &sumsq),
-            "gsl_fit_linear");
-  return c1;
 }
 
 }  // namespace impact

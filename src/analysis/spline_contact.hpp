@@ -62,8 +62,6 @@ class SplineImpact {
   double knot(int k) const;
   static SplinePiece left_of_knot(int k);
   static SplinePiece right_of_knot(int k);
-  // Lemma 5's contact force N_eps = S''/6 on (t* - eps, t* + eps), 0 elsewhere.
-  double lemma5_force_at_offset(double r) const;
 
  private:
   double t_star_, eps_;
@@ -111,8 +109,9 @@ NaturalCubicSpline natural_spline_whole(const SplineImpact& spline, double t_beg
 double max_difference(const SplineImpact& formula, const NaturalCubicSpline& spline, int order,
                       double r_begin, double r_end, int samples);
 
-// <weight S'', psi> = integral over (t* - eps, t* + eps) of weight S''(t) psi(t) dt, computed with
-// gsl_integration_qag in the local time r on each cubic piece separately (S'' is smooth on each).
+// <weight S'', psi> = integral over (t* - eps, t* + eps) of weight S''(t) psi(t) dt, computed by
+// Quadrature (GSL's QAG) in the local time r on each cubic piece separately (S'' is smooth on
+// each).
 struct Pairing {
   double left = 0;    // over (t* - eps, t*], the S_1 piece
   double right = 0;   // over [t*, t* + eps), the S_2 piece
@@ -130,7 +129,8 @@ struct TestFunction {
   std::function<double(double)> second_derivative;
 };
 // A Gaussian centred at t* + 0.3 (width 0.5), cos t, the cubic 1 + (t - t* + 1)^2 + (t - t* + 1)^3,
-// exp(-t) and the C^infinity bump exp(-1/(1 - x^2)), x = t - t* - 0.2, supported in |x| < 1.
+// exp(-t) and the C^infinity bump exp(-1/(1 - x^2)), x = t - t* - 0.2, supported in |x| < 1
+// (Bump{t* + 0.2, 1}, analysis/test_functions.hpp).
 std::vector<TestFunction> lemma5_test_functions(double t_star);
 
 // The Lemma 5 experiment's eps: 1e-1, 10^-1.5, 1e-2, ..., 1e-6 (11 values, half decades; the
@@ -151,12 +151,9 @@ struct Lemma5Convergence {
   double psi_at_t_star = 0;
   double predicted_coefficient = 0;  // psi''(t*) / (24 psi(t*))
   std::vector<Lemma5Point> points;   // one per eps, in the order given
-  double fitted_slope = 0;           // of |ratio - 1/2| against eps, log-log, over all points
+  double fitted_slope = 0;           // fit_order of |ratio - 1/2| against eps, all points
 };
 Lemma5Convergence lemma5_convergence(const TestFunction& psi, double t_star,
                                      const std::vector<double>& eps);
-
-// Least-squares slope of log|y| against log x (gsl_fit_linear); the observed order of convergence.
-double fitted_log_slope(const std::vector<double>& x, const std::vector<double>& y);
 
 }  // namespace impact

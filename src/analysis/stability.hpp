@@ -7,11 +7,12 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <string>
 #include <string_view>
 
-#include "scene/read_scene.hpp"
+#include "impact/scene.hpp"
 
 namespace impact {
 
@@ -22,7 +23,8 @@ enum class Outcome {
   failure,       // stopped by NumericalError: a solve did not converge (message: step, time, why)
   non_finite,    // stopped by NumericalError: a non-finite value, caught before it was written
   over_budget,   // stopped by StabilityOptions::max_work (too slow, not wrong)
-  rejected,      // the scene is not valid for the method (SceneError), e.g. penalty with a COR
+  rejected,      // the method refuses the scene (make_stepper's std::invalid_argument), e.g.
+                 // penalty with a COR
 };
 std::string_view outcome_name(Outcome outcome);
 
@@ -35,11 +37,13 @@ struct StabilityOptions {
   // Stop the run once the iterations summed over its steps (ODE steps of penalty, Newton
   // iterations of fb_newton) exceed this; 0 means no limit.
   std::int64_t max_work = 0;
+  // Sees every step too, for what the check does not measure (penalty's spring energy).
+  std::function<void(std::int64_t l, const State& s, const StepInfo& info)> also;
 };
 
 struct StabilityCheck {
   Outcome outcome = Outcome::ok;
-  std::string message;     // the NumericalError or SceneError text, empty when finished
+  std::string message;     // why the run stopped or was rejected; empty when finished
   std::int64_t steps = 0;  // steps completed
   double min_gap = std::numeric_limits<double>::infinity();  // min_l u^l - phi
   // Whether the theory says E^{l+1} <= E^l for this run: Lemma 3's (4-6) for direct and fb_newton
@@ -58,8 +62,8 @@ struct StabilityCheck {
   double error_energy = 0;  // |E^n - E(t_n)|
 };
 
-// Runs the scene's method through simulate() and measures it. Never throws for a scene that
-// parse_scene() accepted: a failure of the run is its outcome.
+// Runs the scene's method through simulate() and measures it. Never throws: a failure of the run,
+// or a scene its method refuses, is its outcome.
 StabilityCheck check_stability(const Scene& scene, const StabilityOptions& options = {});
 
 }  // namespace impact

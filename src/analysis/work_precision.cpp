@@ -6,9 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "impact/output.hpp"
 #include "impact/registry.hpp"
-#include "scene/read_scene.hpp"
 
 namespace impact {
 
@@ -53,12 +51,9 @@ WorkPrecisionPoint measure_scene(const Scene& scene, const std::optional<TimingR
   return p;
 }
 
-std::vector<WorkPrecisionPoint> sweep_steps(const std::string& scene_path,
-                                            const std::vector<std::string>& overrides,
-                                            const std::vector<double>& steps,
+std::vector<WorkPrecisionPoint> sweep_steps(Scene scene, const std::vector<double>& steps,
                                             const std::optional<TimingRule>& rule) {
   std::vector<WorkPrecisionPoint> points;
-  Scene scene = load_scene(scene_path, overrides);
   for (const double h : steps) {
     scene.grid = Grid::covering(scene.T, h);
     points.push_back(measure_scene(scene, rule));

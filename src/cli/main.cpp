@@ -84,17 +84,28 @@ bool same_file(const std::string& a, const std::string& b) {
          sa.st_ino == sb.st_ino;
 }
 
+// `in_place` tells main() whether rows may have gone out before a failure (to standard output, a
+// pipe, a device) or nothing was written (a file that appears only when the run succeeds).
 int run(const std::string& scene_path, const std::vector<std::string>& overrides,
-        const std::string& out_path, bool quiet) {
+        const std::string& out_path, bool quiet, bool& in_place) {
   using namespace impact;
   const auto start = Clock::now();
   Run loaded = load_run(scene_path, overrides);
   const Scene& scene = loaded.scene;
+  // T not a multiple of h: the grid stops short of T (Grid::covering); say so, and which h fits.
+  if (!quiet && scene.grid.end() < scene.T && scene.T - scene.grid.end() > 1e-12 * scene.T)
+    std::fprintf(stderr,
+                 "impact: note: T = %s is not a multiple of h = %s: the run ends at t = %s, the "
+                 "last grid time before T; h = %s divides T\n",
+                 round_trip(scene.T).c_str(), round_trip(scene.grid.h).c_str(),
+                 round_trip(scene.grid.end()).c_str(),
+                 round_trip(scene.T / static_cast<double>(scene.grid.steps + 1)).c_str());
   const bool to_stdout = out_path.empty() || out_path == "-";
   if (!to_stdout && same_file(out_path, scene_path))
     throw OutputError(out_path + ": --out names the scene file itself; give another file name",
                       true);
   AtomicFile file(out_path);
+  in_place = file.in_place();
   CsvWriter csv(file.stream(), scene.model, scene.output.channels);
   csv.header();
   RowSchedule rows(scene.output.every, scene.grid.steps);
@@ -171,7 +182,8 @@ int main(int argc, char** argv) {
       ->allow_extra_args(false);  // one value per --set, so `--set a=1 SCENE` still sees SCENE
   run_cmd->add_option("--out,-o", out_path,
                       "Output CSV file (default: standard output). Written to a temporary file "
-                      "and renamed when the run succeeds.");
+                      "and renamed when the run succeeds; a device, a pipe or /dev/stdout is "
+                      "written in place.");
   run_cmd->add_flag("--quiet,-q", quiet,
                     "Do not print the progress and summary lines on standard error");
   run_cmd->footer(
@@ -196,9 +208,10 @@ int main(int argc, char** argv) {
     return kBadInput;
   }
 
+  bool in_place = true;
   try {
     if (sweep_cmd->parsed()) return impact::cli::run_sweep(sweep);
-    return run(scene_path, overrides, out_path, quiet);
+    return run(scene_path, overrides, out_path, quiet, in_place);
   } catch (const impact::SceneError& e) {
     std::fprintf(stderr, "impact: error: %s\n", e.what());
     return kBadInput;
@@ -207,7 +220,7 @@ int main(int argc, char** argv) {
     return e.bad_path ? kBadInput : kNumericalFailure;
   } catch (const impact::NumericalError& e) {
     std::fprintf(stderr, "impact: numerical failure: %s%s\n", e.what(),
-                 out_path.empty() || out_path == "-" ? "" : " (no output file written)");
+                 in_place ? "" : " (no output file written)");
     return kNumericalFailure;
   } catch (const std::exception& e) {
     // Caught so that the stack unwinds and AtomicFile removes its temporary file.

@@ -10,15 +10,18 @@
 namespace impact {
 
 // What direct carries from step to step, for one particle (Real = double) or for a vector of
-// particles (the ensemble, ensemble.hpp). Between contacts the scheme is the closed-form free
-// flight from the anchor (free_flight.hpp explains why it is not stepped increment by increment).
+// particles (the ensemble, ensemble.hpp), in gap coordinates g = u - phi: a state resting on a
+// floor far from the origin (phi = 1e6) is then exactly g = 0, where u = phi would be rounded to
+// the floor's ulp and the closed form below would turn that rounding into velocity (2 ulp / h).
+// Between contacts the scheme is the closed-form free flight from the anchor (free_flight.hpp
+// explains why it is not stepped increment by increment).
 template <class Real>
 struct DirectLanes {
-  Real anchor_u{}, anchor_v{};  // the state where the free flight started: the end of the last
-                                // contact step, or the initial state
-  Real since{};                 // l - l_anchor at t_l, a whole number (exact in a double)
-  Real u{}, v{};                // the state at t_l
-  Real contact_force{};         // N^{l-1}, of the step that ended at t_l
+  Real anchor_gap{}, anchor_v{};  // the state where the free flight started: the end of the last
+                                  // contact step, or the initial state
+  Real since{};                   // l - l_anchor at t_l, a whole number (exact in a double)
+  Real gap{}, v{};                // the state at t_l
+  Real contact_force{};           // N^{l-1}, of the step that ended at t_l
 };
 
 // One step of direct from t_l to t_{l+1}. Real is double (with Mask = bool) or a vector of lanes
@@ -26,25 +29,25 @@ struct DirectLanes {
 // computed and the branches taken as selections, so that each lane of the ensemble is
 // bit-identical to the single-particle solver. `cor` is read only where has_cor holds.
 template <class Real, class Mask>
-void direct_step(DirectLanes<Real>& s, const Real& phi, const Real& f, const Real& cor,
-                 const Mask& has_cor, double h) {
+void direct_step(DirectLanes<Real>& s, const Real& f, const Real& cor, const Mask& has_cor,
+                 double h) {
   const Real since = s.since + 1;
   const Real t = since * h;
   // (5-1) with N^l = 0: where the particle would be if the floor were not there.
-  Real u_free, v_free;
-  free_flight(s.anchor_u, s.anchor_v, t, f, u_free, v_free);
-  const auto free = u_free > phi;
+  Real gap_free, v_free;
+  free_flight(s.anchor_gap, s.anchor_v, t, f, gap_free, v_free);
+  const auto free = gap_free > 0;
   // Otherwise (4-3) forces u^{l+1} = phi; (5-1) solved for N^l,
   // N^l = (2/h)((phi - u^l)/h - v^l) - f = (2/h^2)(phi - u_free) >= 0.
-  const Real force = 2 / (h * h) * (phi - u_free);
+  const Real force = 2 / (h * h) * (Real{} - gap_free);
   const Real v_scheme = v_free + h * force;  // (4-1), equal to (4-2) here
   // The COR law of restitution.hpp: v^{l+1} = -COR v^l on a step with N^l > 0.
   Real v_contact;
   velocity_after_step(has_cor, cor, force > 0, s.v, v_scheme, v_contact);
   s.contact_force = free ? Real{} : force;
-  s.u = free ? u_free : phi;
+  s.gap = free ? gap_free : Real{};
   s.v = free ? v_free : v_contact;
-  s.anchor_u = free ? s.anchor_u : phi;
+  s.anchor_gap = free ? s.anchor_gap : Real{};
   s.anchor_v = free ? s.anchor_v : v_contact;
   s.since = free ? since : Real{};
 }
@@ -66,15 +69,15 @@ class Direct {
 
   // A free flight starts at s: the anchor of the closed form (free_flight.hpp).
   void initialize(const State& s, std::int64_t) {
-    lanes_.anchor_u = lanes_.u = s.u;
+    lanes_.anchor_gap = lanes_.gap = s.u - phi_;
     lanes_.anchor_v = lanes_.v = s.v;
     lanes_.since = 0;
   }
 
   StepInfo do_step(State& s, std::int64_t) {
     if (paper_) return paper_step(s);
-    direct_step(lanes_, phi_, f_, cor_, has_cor_, h_);
-    s = {lanes_.u, lanes_.v};
+    direct_step(lanes_, f_, cor_, has_cor_, h_);
+    s = {phi_ + lanes_.gap, lanes_.v};
     StepInfo info;
     info.contact_force = lanes_.contact_force;
     return info;

@@ -46,20 +46,25 @@ template <class T>
 
 // The columns of the summary (Ensemble::keep_summary), each at its first particle.
 struct SummaryColumns {
+  const double* phi;
+  double* u;  // u = phi + gap as the single-particle solvers return it (the initial u at first)
   double *steps, *episodes, *run, *max_u, *first_l, *first_u, *first_v, *poison;
 };
 
 // The columns of the ensemble, each at its first particle.
 struct Columns {
-  const double *phi, *f, *cor;
+  const double *f, *cor;
   const std::int64_t* has_cor;
-  double *u, *v, *force, *anchor_u, *anchor_v, *since;
+  double *gap, *v, *force, *anchor_gap, *anchor_v, *since;
   SummaryColumns summary;
 };
 
 template <class Real>
-[[gnu::always_inline]] inline void load_summary(SummaryLanes<Real>& s, Real& poison,
-                                                const SummaryColumns& c, Eigen::Index i) {
+[[gnu::always_inline]] inline void load_summary(SummaryLanes<Real>& s, Real& phi, Real& u,
+                                                Real& poison, const SummaryColumns& c,
+                                                Eigen::Index i) {
+  load(phi, c.phi + i);
+  load(u, c.u + i);
   load(s.contacts.steps, c.steps + i);
   load(s.contacts.episodes, c.episodes + i);
   load(s.contacts.run, c.run + i);
@@ -72,7 +77,9 @@ template <class Real>
 
 template <class Real>
 [[gnu::always_inline]] inline void store_summary(const SummaryColumns& c, Eigen::Index i,
-                                                 const SummaryLanes<Real>& s, const Real& poison) {
+                                                 const SummaryLanes<Real>& s, const Real& u,
+                                                 const Real& poison) {
+  store(c.u + i, u);
   store(c.steps + i, s.contacts.steps);
   store(c.episodes + i, s.contacts.episodes);
   store(c.run + i, s.contacts.run);
@@ -100,7 +107,9 @@ template <class Real>
 // A block of Vectors vectors of Lanes particles is loaded into registers, stepped `steps` times and
 // stored back: the step is latency-bound (each step's contact test depends on the last), so several
 // independent vectors are interleaved to keep the SIMD units busy. With Summarize, each step also
-// updates the summary; `first_step` is the index l of the first of the steps.
+// updates the summary on u = phi + gap, the u the single-particle solvers return (u^l is carried
+// from the step before, so that u^0 is the initial u as given); `first_step` is the index l of the
+// first of the steps.
 template <int Lanes, int Vectors, bool Summarize>
 [[gnu::always_inline]] inline void direct_blocks(const Columns& c, Eigen::Index padded,
                                                  std::int64_t first_step, std::int64_t steps,
@@ -109,45 +118,46 @@ template <int Lanes, int Vectors, bool Summarize>
   using Mask = typename LaneTypes<Lanes>::Mask;
   for (Eigen::Index first = 0; first < padded; first += Lanes * Vectors) {
     DirectLanes<Real> s[Vectors];
-    Real phi[Vectors], f[Vectors], cor[Vectors];
+    Real f[Vectors], cor[Vectors];
     Mask has_cor[Vectors];
     [[maybe_unused]] SummaryLanes<Real> summary[Vectors];
-    [[maybe_unused]] Real poison[Vectors];
+    [[maybe_unused]] Real phi[Vectors], u[Vectors], poison[Vectors];
     for (int b = 0; b < Vectors; ++b) {
       const Eigen::Index i = first + b * Lanes;
-      load(phi[b], c.phi + i);
       load(f[b], c.f + i);
       load(cor[b], c.cor + i);
       load(has_cor[b], c.has_cor + i);
-      load(s[b].u, c.u + i);
+      load(s[b].gap, c.gap + i);
       load(s[b].v, c.v + i);
       load(s[b].contact_force, c.force + i);
-      load(s[b].anchor_u, c.anchor_u + i);
+      load(s[b].anchor_gap, c.anchor_gap + i);
       load(s[b].anchor_v, c.anchor_v + i);
       load(s[b].since, c.since + i);
-      if constexpr (Summarize) load_summary(summary[b], poison[b], c.summary, i);
+      if constexpr (Summarize) load_summary(summary[b], phi[b], u[b], poison[b], c.summary, i);
     }
     if constexpr (Summarize) {
       Real l = Real{} + static_cast<double>(first_step);
       for (std::int64_t k = 0; k < steps; ++k, l += 1)
         for (int b = 0; b < Vectors; ++b) {
-          const Real u = s[b].u, v = s[b].v;
-          direct_step(s[b], phi[b], f[b], cor[b], has_cor[b], h);
-          summarize_step(summary[b], poison[b], l, phi[b], u, v, s[b].u, s[b].contact_force);
+          const Real u_before = u[b], v_before = s[b].v;
+          direct_step(s[b], f[b], cor[b], has_cor[b], h);
+          u[b] = phi[b] + s[b].gap;
+          summarize_step(summary[b], poison[b], l, phi[b], u_before, v_before, u[b],
+                         s[b].contact_force);
         }
     } else {
       for (std::int64_t k = 0; k < steps; ++k)
-        for (int b = 0; b < Vectors; ++b) direct_step(s[b], phi[b], f[b], cor[b], has_cor[b], h);
+        for (int b = 0; b < Vectors; ++b) direct_step(s[b], f[b], cor[b], has_cor[b], h);
     }
     for (int b = 0; b < Vectors; ++b) {
       const Eigen::Index i = first + b * Lanes;
-      store(c.u + i, s[b].u);
+      store(c.gap + i, s[b].gap);
       store(c.v + i, s[b].v);
       store(c.force + i, s[b].contact_force);
-      store(c.anchor_u + i, s[b].anchor_u);
+      store(c.anchor_gap + i, s[b].anchor_gap);
       store(c.anchor_v + i, s[b].anchor_v);
       store(c.since + i, s[b].since);
-      if constexpr (Summarize) store_summary(c.summary, i, summary[b], poison[b]);
+      if constexpr (Summarize) store_summary(c.summary, i, summary[b], u[b], poison[b]);
     }
   }
 }
@@ -158,38 +168,38 @@ template <int Lanes, int Vectors, bool Summarize>
                                                       double theta, double h) {
   using Real = typename LaneTypes<Lanes>::Real;
   for (Eigen::Index first = 0; first < padded; first += Lanes * Vectors) {
-    Real u[Vectors], v[Vectors], force[Vectors], phi[Vectors], f[Vectors], e[Vectors];
+    Real gap[Vectors], v[Vectors], force[Vectors], f[Vectors], e[Vectors];
     [[maybe_unused]] SummaryLanes<Real> summary[Vectors];
-    [[maybe_unused]] Real poison[Vectors];
+    [[maybe_unused]] Real phi[Vectors], u[Vectors], poison[Vectors];
     for (int b = 0; b < Vectors; ++b) {
       const Eigen::Index i = first + b * Lanes;
-      load(phi[b], c.phi + i);
       load(f[b], c.f + i);
       load(e[b], c.cor + i);
-      load(u[b], c.u + i);
+      load(gap[b], c.gap + i);
       load(v[b], c.v + i);
       load(force[b], c.force + i);
-      if constexpr (Summarize) load_summary(summary[b], poison[b], c.summary, i);
+      if constexpr (Summarize) load_summary(summary[b], phi[b], u[b], poison[b], c.summary, i);
     }
     if constexpr (Summarize) {
       Real l = Real{} + static_cast<double>(first_step);
       for (std::int64_t k = 0; k < steps; ++k, l += 1)
         for (int b = 0; b < Vectors; ++b) {
           const Real u_before = u[b], v_before = v[b];
-          moreau_jean_step(u[b], v[b], force[b], phi[b], f[b], e[b], theta, h);
+          moreau_jean_step(gap[b], v[b], force[b], f[b], e[b], theta, h);
+          u[b] = phi[b] + gap[b];
           summarize_step(summary[b], poison[b], l, phi[b], u_before, v_before, u[b], force[b]);
         }
     } else {
       for (std::int64_t k = 0; k < steps; ++k)
         for (int b = 0; b < Vectors; ++b)
-          moreau_jean_step(u[b], v[b], force[b], phi[b], f[b], e[b], theta, h);
+          moreau_jean_step(gap[b], v[b], force[b], f[b], e[b], theta, h);
     }
     for (int b = 0; b < Vectors; ++b) {
       const Eigen::Index i = first + b * Lanes;
-      store(c.u + i, u[b]);
+      store(c.gap + i, gap[b]);
       store(c.v + i, v[b]);
       store(c.force + i, force[b]);
-      if constexpr (Summarize) store_summary(c.summary, i, summary[b], poison[b]);
+      if constexpr (Summarize) store_summary(c.summary, i, summary[b], u[b], poison[b]);
     }
   }
 }
@@ -295,7 +305,7 @@ Ensemble::Ensemble(EnsembleMethod method, std::span<const Model> models,
   f_.setZero(padded_);
   cor_.setZero(padded_);
   has_cor_.setZero(padded_);
-  u_.setZero(padded_);
+  gap_.setZero(padded_);
   v_.setZero(padded_);
   force_.setZero(padded_);
   since_.setZero(padded_);
@@ -309,12 +319,15 @@ Ensemble::Ensemble(EnsembleMethod method, std::span<const Model> models,
     // As Direct and MoreauJean read their Model.
     cor_[i] = method == EnsembleMethod::direct ? m.cor.value_or(0.0) : m.cor.value_or(1.0);
     has_cor_[i] = m.cor ? -1 : 0;
-    u_[i] = initial[static_cast<std::size_t>(i)].u;
+    gap_[i] = initial[static_cast<std::size_t>(i)].u - m.phi;
     v_[i] = initial[static_cast<std::size_t>(i)].v;
   }
   // Direct starts its free flight at the initial state (DirectLanes).
-  anchor_u_ = u_;
+  anchor_gap_ = gap_;
   anchor_v_ = v_;
+  // The state at t_0 is the initial state as given (phi + (u0 - phi) may round away from u0).
+  u_.setZero(padded_);
+  for (Eigen::Index i = 0; i < size_; ++i) u_[i] = initial[static_cast<std::size_t>(i)].u;
 }
 
 std::string_view Ensemble::instruction_set() const {
@@ -360,11 +373,11 @@ SummaryLanes<double> Ensemble::summary(Eigen::Index i) const {
 
 void Ensemble::advance(std::int64_t steps) {
   if (steps <= 0) return;
-  const SummaryColumns summary{steps_.data(),   episodes_.data(), run_.data(),     max_u_.data(),
-                               first_l_.data(), first_u_.data(),  first_v_.data(), poison_.data()};
-  const Columns c{phi_.data(),      f_.data(),     cor_.data(),   has_cor_.data(),
-                  u_.data(),        v_.data(),     force_.data(), anchor_u_.data(),
-                  anchor_v_.data(), since_.data(), summary};
+  const SummaryColumns summary{phi_.data(),     u_.data(),     steps_.data(),   episodes_.data(),
+                               run_.data(),     max_u_.data(), first_l_.data(), first_u_.data(),
+                               first_v_.data(), poison_.data()};
+  const Columns c{f_.data(),     cor_.data(),        has_cor_.data(),  gap_.data(),   v_.data(),
+                  force_.data(), anchor_gap_.data(), anchor_v_.data(), since_.data(), summary};
   const bool direct = method_ == EnsembleMethod::direct;
   const std::int64_t l = steps_done_;
   switch (level_) {
@@ -382,6 +395,7 @@ void Ensemble::advance(std::int64_t steps) {
       direct ? baseline_direct(c, padded_, l, steps, h_, summarize_)
              : baseline_moreau_jean(c, padded_, l, steps, theta_, h_, summarize_);
   }
+  u_ = phi_ + gap_;  // as the single-particle solvers return u = phi + gap
   steps_done_ += steps;
 }
 

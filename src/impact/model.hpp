@@ -44,14 +44,18 @@ struct Grid {
   std::int64_t steps = 0;
   double t(std::int64_t l) const { return static_cast<double>(l) * h; }
 
-  // The grid of step h that covers [0, T]: steps = T/h when T/h is within 1e-9 relative of a
-  // whole number (so that T = 10, h = 0.001 gives 10000 steps despite the rounding of 0.001),
-  // else ceil(T/h). T/h must be at most 2^53 (the scene reader checks it).
+  // The grid of step h on [0, T]: steps = T/h when T/h is a whole number up to the rounding of
+  // the division (4 eps relative: T and h each carry half an ulp of their decimal values and the
+  // quotient another half, so T = 10, h = 0.001 gives 10000 steps although 10 / 0.001 rounds to
+  // 9999.999999999998), else floor(T/h): the grid never passes T, and ends short of it by less
+  // than h when h does not divide T. T/h must be at most 2^53 (the scene reader checks it).
   static Grid covering(double T, double h) {
-    const double ratio = T / h, rounded = std::round(ratio);
-    return {h, static_cast<std::int64_t>(
-                   std::abs(ratio - rounded) <= 1e-9 * rounded ? rounded : std::ceil(ratio))};
+    const double ratio = T / h, nearest = std::round(ratio);
+    const bool whole = std::fabs(ratio - nearest) <= 4 * 2.220446049250313e-16 * nearest;
+    return {h, static_cast<std::int64_t>(whole ? nearest : std::floor(ratio))};
   }
+  // The last grid time, t_steps <= T.
+  double end() const { return t(steps); }
 };
 
 }  // namespace impact

@@ -16,10 +16,12 @@ namespace impact {
 // One step of Moreau-Jean for one particle (Real = double) or a vector of particles (the ensemble,
 // ensemble.hpp): the same operations in the same order for both, the branches taken as
 // selections, so that each lane of the ensemble is bit-identical to the single-particle solver.
+// The position is the gap g = u - phi: far from the origin (phi = 1e9) the increments h v of u
+// fall below the floor's ulp and u would freeze while v grows; the gap keeps them.
 // e is the COR (1 without one); contact_force is set to P^{l+1} / h.
 template <class Real>
-void moreau_jean_step(Real& u, Real& v, Real& contact_force, const Real& phi, const Real& f,
-                      const Real& e, double theta, double h) {
+void moreau_jean_step(Real& gap, Real& v, Real& contact_force, const Real& f, const Real& e,
+                      double theta, double h) {
   const Real v_free = v + h * f;
   // The contact is active when u^l - phi + gamma h v^l <= 0; then the one-contact LCP in closed
   // form: the smallest impulse that makes v^{l+1} >= -e v^l. `bound` is -e v^l where the contact
@@ -27,10 +29,10 @@ void moreau_jean_step(Real& u, Real& v, Real& contact_force, const Real& phi, co
   // nested selections or `active & (v_free < target)` made GCC build the AVX-512 masks lane by
   // lane (the ensemble ran 2.3x slower).
   const Real target = -e * v;
-  const Real bound = u - phi + 0.5 * h * v <= 0.0 ? target : v_free;
+  const Real bound = gap + 0.5 * h * v <= 0.0 ? target : v_free;
   const Real impulse = v_free < bound ? bound - v_free : Real{};
   const Real v_next = v_free + impulse;
-  u += h * (theta * v_next + (1 - theta) * v);
+  gap += h * (theta * v_next + (1 - theta) * v);
   v = v_next;
   contact_force = impulse / h;
 }
@@ -45,12 +47,12 @@ class MoreauJean {
   MoreauJean(const Model& model, double h, const MoreauJeanParams& params)
       : phi_(model.phi), f_(model.f), h_(h), theta_(params.theta), e_(model.cor.value_or(1.0)) {}
 
-  // Moreau-Jean carries nothing but the state itself from step to step.
-  void initialize(const State&, std::int64_t) {}
+  void initialize(const State& s, std::int64_t) { state_ = {s.u - phi_, s.v}; }
 
-  StepInfo do_step(State& s, std::int64_t) const {
+  StepInfo do_step(State& s, std::int64_t) {
     StepInfo info;
-    moreau_jean_step(s.u, s.v, info.contact_force, phi_, f_, e_, theta_, h_);
+    moreau_jean_step(state_.u, state_.v, info.contact_force, f_, e_, theta_, h_);
+    s = {phi_ + state_.u, state_.v};
     return info;
   }
 
@@ -59,6 +61,7 @@ class MoreauJean {
   double h_;
   double theta_;
   double e_;
+  State state_;  // (u - phi, v) at t_l
 };
 
 }  // namespace impact

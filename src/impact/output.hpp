@@ -21,10 +21,15 @@ class OutputError : public std::runtime_error {
   bool bad_path;
 };
 
-// A file that appears at `path` only on commit(); "-" or "" means standard output. A symbolic link
-// is followed (the file it names is replaced, the link stays). A path that names something other
-// than a regular file, e.g. /dev/null or a named pipe, is written directly: renaming over it would
-// replace the device or pipe itself.
+// A file that appears at `path` only on commit(); "-" or "" means standard output. Symbolic links
+// are followed, and stay: the file a link names is replaced, or created if the link dangles. What
+// is not a regular file is written in place, as it stands: a device or a named pipe (renaming over
+// it would replace the node itself), and an open descriptor such as /dev/stdout, /dev/fd/N or
+// /proc/self/fd/N (written through the caller's descriptor, so that `>>` appends, even when it is
+// redirected to a regular file). Refused before any work, as bad paths: a read-only file, a
+// directory that is not writable (checked by mode bits too, so also for root), a name longer than
+// NAME_MAX or a path longer than PATH_MAX. Every signal whose default action ends the process
+// removes the temporary first.
 class AtomicFile {
  public:
   explicit AtomicFile(const std::string& path);
@@ -37,8 +42,13 @@ class AtomicFile {
   // can stop early instead of computing output that cannot be stored.
   void check() const;
   void commit();
+  // Written as it goes (standard output, a device, a pipe, a descriptor), not through a temporary.
+  bool in_place() const { return temp_.empty(); }
 
  private:
+  void open_in_place(const std::string& target);
+  void forget_temp();
+
   std::string path_;    // as given, for messages
   std::string target_;  // the file that commit() replaces: path_ with symbolic links followed
   std::string temp_;

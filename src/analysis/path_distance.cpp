@@ -1,0 +1,34 @@
+#include "analysis/path_distance.hpp"
+
+#include <variant>
+#include <vector>
+
+#include "analysis/impact_times.hpp"
+
+namespace impact {
+
+double sup_distance(const Scene& scene, const MethodParams& other) {
+  AnyStepper a = make_stepper(scene);
+  AnyStepper b = make_stepper(scene.model, scene.grid.h, other);
+  return std::visit(
+      [&](auto& stepper_a, auto& stepper_b) {
+        LockstepStepper pair(stepper_a, stepper_b, scene.initial, scene.grid.h);
+        simulate(pair, scene.initial, scene.grid,
+                 [](std::int64_t, const State&, const StepInfo&) {});
+        return pair.sup_distance();
+      },
+      a, b);
+}
+
+double sup_distance(const ExactSolution& u, const ExactSolution& w, double T) {
+  constexpr int kSamples = 10000;
+  std::vector<double> times = impact_times(u, T);
+  const std::vector<double> w_times = impact_times(w, T);
+  times.insert(times.end(), w_times.begin(), w_times.end());
+  for (int i = 0; i <= kSamples; ++i) times.push_back(T * i / kSamples);
+  double sup = 0;
+  for (double t : times) sup = std::fmax(sup, std::fabs(u.at(t).u - w.at(t).u));
+  return sup;
+}
+
+}  // namespace impact

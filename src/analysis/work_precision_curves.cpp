@@ -1,0 +1,134 @@
+#include "analysis/work_precision_curves.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "impact/exact.hpp"
+#include "impact/registry.hpp"
+#include "scene/read_scene.hpp"
+
+namespace impact {
+namespace {
+
+const std::vector<double> kTolerances = {1e-3, 1e-5, kPenaltyReferenceTolerance, 1e-9, 1e-11};
+const std::vector<double> kStiffnesses = {1e4, 1e6, 1e8};
+const std::vector<std::string> kOdeSteppers = {"rk8pd", "msbdf"};
+
+Curve peer_curve(Scene scene, const PeerSolver& peer, const std::optional<TimingRule>& rule) {
+  Curve c{peer.name, true, {}};
+  for (const double h : steps_125(kStepMax, peer.step_min)) {
+    scene.grid = Grid::covering(scene.T, h);
+    c.points.push_back(peer.measure(scene, rule));
+  }
+  return c;
+}
+
+Curve penalty_curve(const Scene& scene, const std::string& stepper, double c_N,
+                    const std::optional<TimingRule>& rule) {
+  Curve c{"penalty_" + stepper + "_cN1e" + std::to_string(std::lround(std::log10(c_N))), false, {}};
+  for (const double tolerance : kTolerances)
+    c.points.push_back(measure_scene(penalty_variant(scene, stepper, c_N, tolerance), rule));
+  return c;
+}
+
+}  // namespace
+
+const std::vector<WorkPrecisionScene>& work_precision_scenes() {
+  static const std::vector<WorkPrecisionScene> scenes = {
+      {"figure3_no_cor", "figure3", "no_cor.toml", "Figure 3: f = 0, no COR", false},
+      {"figure3_cor075", "figure3", "cor075.toml", "Figure 3: f = 0, COR = 0.75", true},
+      {"figure4_no_cor", "figure4", "no_cor.toml", "Figure 4: f = -9.80665, no COR", false},
+      {"figure4_cor075", "figure4", "cor075.toml", "Figure 4: f = -9.80665, COR = 0.75", true},
+      {"offgrid_no_cor", "work_precision", "offgrid.toml",
+       "off-grid: f = 0, no COR, impact at t = pi", false},
+  };
+  return scenes;
+}
+
+const WorkPrecisionScene& work_precision_scene(std::string_view name) {
+  for (const WorkPrecisionScene& s : work_precision_scenes())
+    if (s.name == name) return s;
+  throw std::out_of_range("no work-precision scene " + std::string(name));
+}
+
+Scene load_work_precision_scene(const ExperimentContext& context, const WorkPrecisionScene& s) {
+  return load_scene(context.scene_path(s.experiment, s.file));
+}
+
+const std::vector<double>& swept_steps() {
+  static const std::vector<double> steps = steps_125(kStepMax, kStepMin);
+  return steps;
+}
+
+std::vector<WorkPrecisionPoint> step_curve(const Scene& scene, std::string_view method,
+                                           const std::optional<TimingRule>& rule) {
+  const MethodInfo* info = find_method(method);
+  if (!info) throw std::out_of_range("no method " + std::string(method));
+  Scene variant = scene;
+  variant.method = info->defaults;
+  return sweep_steps(variant, swept_steps(), rule);
+}
+
+Scene penalty_variant(Scene scene, const std::string& stepper, double c_N, double tolerance) {
+  PenaltyParams params;
+  params.stepper = stepper;
+  params.stiffness = c_N;
+  params.rtol = params.atol = tolerance;
+  scene.method = params;
+  scene.grid = Grid::covering(scene.T, kPenaltyGrid);
+  return scene;
+}
+
+std::vector<Curve> measure_curves(const Scene& scene, bool has_cor,
+                                  const WorkPrecisionOptions& options) {
+  std::vector<Curve> curves;
+  for (const char* method : {"moreau_jean", "fb_newton", "direct"})
+    curves.push_back({method, true, step_curve(scene, method, options.timing)});
+  if (options.peer) curves.push_back(peer_curve(scene, *options.peer, options.timing));
+  if (!has_cor)
+    for (const std::string& stepper : kOdeSteppers)
+      for (const double c_N : kStiffnesses)
+        curves.push_back(penalty_curve(scene, stepper, c_N, options.timing));
+  return curves;
+}
+
+DirectImpactPrediction predict_direct_impact(double t_impact, double speed, double h) {
+  const double steps = t_impact / h;
+  const double theta = steps - std::floor(steps);
+  return {theta, std::fabs(1 - 2 * theta), 2 * theta * (1 - theta) * speed * speed};
+}
+
+namespace {
+
+double exact_seconds_per_impact(const ExactSolution& exact) {
+  std::int64_t impacts = 0;
+  while (impacts < 1000 && exact.impact_time(impacts + 1)) ++impacts;
+  if (impacts == 0) return std::nan("");
+  double sum = 0, seconds = 0;
+  std::int64_t evaluated = 0;
+  const double start = cpu_seconds();
+  // At least 1000 impacts between two readings of the clock, which costs more than an impact.
+  const std::int64_t rounds = (1000 + impacts - 1) / impacts;
+  while ((seconds = cpu_seconds() - start) < 1e-3) {
+    for (std::int64_t r = 0; r < rounds; ++r)
+      for (std::int64_t k = 1; k <= impacts; ++k)
+        sum += *exact.impact_time(k) + *exact.impact_speed(k);
+    evaluated += rounds * impacts;
+  }
+  if (!std::isfinite(sum)) return std::nan("");
+  return seconds / static_cast<double>(evaluated);
+}
+
+}  // namespace
+
+ExactCost exact_cost(Scene scene, const TimingRule& rule) {
+  scene.method = ExactParams{};
+  scene.grid = Grid::covering(scene.T, kPenaltyGrid);
+  ExactCost cost;
+  cost.solve = time_solve([&] { return make_stepper(scene); }, scene.initial, scene.grid, rule);
+  cost.grid_points = scene.grid.steps;
+  cost.seconds_per_impact = exact_seconds_per_impact(ExactSolution(scene.model, scene.initial));
+  return cost;
+}
+
+}  // namespace impact

@@ -1,0 +1,86 @@
+// The curves of experiments/work_precision: on the paper's Figure 3 and Figure 4 scenes (without
+// COR and with COR = 0.75) and on a scene whose impact lies on no grid point, every method's
+// error against `exact` and the CPU time of its solve, over a sweep of the step h (direct,
+// fb_newton, moreau_jean, a peer such as Siconos when it is built) or of the tolerance (penalty,
+// c_N = 1e4, 1e6, 1e8, an explicit and an implicit GSL stepper).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "analysis/experiment.hpp"
+#include "analysis/work_precision.hpp"
+#include "impact/scene.hpp"
+
+namespace impact {
+
+struct WorkPrecisionScene {
+  std::string name;
+  std::string experiment, file;  // experiments/<experiment>/<file>
+  std::string title;
+  bool has_cor;
+};
+const std::vector<WorkPrecisionScene>& work_precision_scenes();
+const WorkPrecisionScene& work_precision_scene(std::string_view name);
+Scene load_work_precision_scene(const ExperimentContext& context, const WorkPrecisionScene& s);
+
+// The step sweep: h = 0.1, 0.05, 0.02, ..., 1e-5 (4 decades, 13 steps; steps_125).
+constexpr double kStepMax = 0.1, kStepMin = 1e-5;
+const std::vector<double>& swept_steps();
+// Penalty's output grid, and the middle of its tolerance sweep (the reference point).
+constexpr double kPenaltyGrid = 1e-3, kPenaltyReferenceTolerance = 1e-7;
+
+struct Curve {
+  std::string name;        // e.g. "direct", "penalty_rk8pd_cN1e6", "siconos"
+  bool step_sweep = true;  // false: a tolerance sweep on a fixed grid
+  std::vector<WorkPrecisionPoint> points;
+};
+
+// Another implementation of moreau_jean's scheme (Siconos's MoreauJeanOSI when it is built),
+// swept over the steps from kStepMax down to step_min: one point per step.
+struct PeerSolver {
+  std::string name;     // the curve's name, e.g. "siconos"
+  std::string same_as;  // the project's method it implements, e.g. "moreau_jean"
+  double step_min;
+  WorkPrecisionPoint (*measure)(const Scene& scene, const std::optional<TimingRule>& rule);
+};
+
+// What to run; the defaults are the experiment without a peer.
+struct WorkPrecisionOptions {
+  // How solves are timed; nullopt: errors only (no CPU times, no timing keys in the summary).
+  std::optional<TimingRule> timing = TimingRule{};
+  std::optional<PeerSolver> peer;
+};
+
+// The time-stepper's curve: the scene with the method's default parameters over swept_steps().
+std::vector<WorkPrecisionPoint> step_curve(const Scene& scene, std::string_view method,
+                                           const std::optional<TimingRule>& rule);
+// The scene as penalty with this GSL stepper, c_N and rtol = atol = tolerance, on kPenaltyGrid.
+Scene penalty_variant(Scene scene, const std::string& stepper, double c_N, double tolerance);
+
+// Every curve of a scene, in drawing order: moreau_jean, fb_newton, direct (on top where their
+// errors coincide), the peer, then penalty's (on a scene without COR: penalty has no COR law).
+std::vector<Curve> measure_curves(const Scene& scene, bool has_cor,
+                                  const WorkPrecisionOptions& options);
+
+// `direct` without COR, f = 0, one impact at t* off the grid: with theta the fraction of the step
+// before the floor, the rebound is |v| |1 - 2 theta| and the energy lost 2 theta (1 - theta) v^2
+// (paper_notes/restitution.md), whatever h.
+struct DirectImpactPrediction {
+  double theta, effective_cor, energy_loss;
+};
+DirectImpactPrediction predict_direct_impact(double t_impact, double speed, double h);
+
+// `exact`, the reference (error 0 by definition, so no point on the diagrams): the CPU time of a
+// solve sampled on kPenaltyGrid, and of one impact's time and speed from the closed form
+// (averaged over the first 1000 impacts, or as many as there are; NaN without one).
+struct ExactCost {
+  SolveCost solve;
+  std::int64_t grid_points = 0;
+  double seconds_per_impact = 0;
+};
+ExactCost exact_cost(Scene scene, const TimingRule& rule);
+
+}  // namespace impact
