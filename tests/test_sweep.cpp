@@ -269,6 +269,7 @@ TEST_CASE("sweep: invalid points and options exit 2 naming the point and the key
       {"--vary time.h=1e-3 --summary err_u_sup", "needs --against exact"},
       {"--vary time.h=1e-3 --against nothing", "the only reference is 'exact'"},
       {"--vary time.h=1e-3 --shard 3/2", "--shard 3/2"},
+      {"--vary time.h=1e-3 --instruction-set sse9", "--instruction-set sse9: not one"},
       {"--vary time.h=1e-3 --merge x.csv", "--merge takes only the parts"},
   };
   for (const Case& c : cases) {
@@ -399,6 +400,12 @@ TEST_CASE("sweep: the output is the same bytes whatever --threads is", "[sweep][
     CHECK(rows_of(slurp(dir / "1.csv")).size() == 3001);
     CHECK(slurp(dir / "1.csv") == slurp(dir / "2.csv"));
     CHECK(slurp(dir / "1.csv") == slurp(dir / "3.csv"));
+    // Every vector code of the ensemble gives the same bytes too.
+    for (const std::string_view isa : Ensemble::supported_instruction_sets()) {
+      REQUIRE(dir.run(args + " --instruction-set " + std::string(isa) + " --out isa.csv").code ==
+              0);
+      CHECK(slurp(dir / "isa.csv") == slurp(dir / "1.csv"));
+    }
   }
   // wall_s when asked for: a time per point.
   REQUIRE(dir.run("sweep " + quote(kFigure4) +
@@ -423,19 +430,21 @@ TEST_CASE("sweep: shards merged are the unsharded file, byte for byte", "[sweep]
   // Parts in any order.
   REQUIRE(dir.run("sweep --merge p3.csv p1.csv p2.csv --out merged.csv").code == 0);
   CHECK(slurp(dir / "merged.csv") == slurp(dir / "all.csv"));
-  // One shard of one; more shards than points (shard 25 of 25 has none).
+  // One shard of one; more shards than points (shards 6 and 7 of 7 have none).
   REQUIRE(dir.run(args + " --shard 1/1 --out q.csv").code == 0);
   REQUIRE(dir.run("sweep --merge q.csv --out merged1.csv").code == 0);
   CHECK(slurp(dir / "merged1.csv") == slurp(dir / "all.csv"));
+  const std::string few = "sweep " + quote(kFigure4) + " --vary time.h=1e-3:1e-2:5 -q";
+  REQUIRE(dir.run(few + " --out few.csv").code == 0);
   std::string parts;
-  for (int k = 1; k <= 25; ++k) {
+  for (int k = 1; k <= 7; ++k) {
     REQUIRE(
-        dir.run(args + " --shard " + std::to_string(k) + "/25 --out r" + std::to_string(k) + ".csv")
+        dir.run(few + " --shard " + std::to_string(k) + "/7 --out r" + std::to_string(k) + ".csv")
             .code == 0);
     parts += " r" + std::to_string(k) + ".csv";
   }
-  REQUIRE(dir.run("sweep --merge" + parts + " --out merged25.csv").code == 0);
-  CHECK(slurp(dir / "merged25.csv") == slurp(dir / "all.csv"));
+  REQUIRE(dir.run("sweep --merge" + parts + " --out merged7.csv").code == 0);
+  CHECK(slurp(dir / "merged7.csv") == slurp(dir / "few.csv"));
 }
 
 TEST_CASE("sweep: merging parts that do not belong together is rejected", "[sweep][regression]") {

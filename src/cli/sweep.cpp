@@ -13,6 +13,7 @@
 
 #include "cli/sweep_csv.hpp"
 #include "cli/sweep_runner.hpp"
+#include "impact/ensemble.hpp"
 #include "impact/output.hpp"
 #include "scene/sweep_grid.hpp"
 
@@ -80,6 +81,9 @@ CLI::App* add_sweep_command(CLI::App& app, SweepOptions& o) {
   cmd->add_option("--merge", o.merge,
                   "Join the parts of a sharded sweep into the file one run would have written")
       ->allow_extra_args(true);
+  cmd->add_option("--instruction-set", o.instruction_set,
+                  "The ensemble's vector code: avx512f, avx2 or baseline (default: the widest this "
+                  "processor has); all give the same bytes");
   cmd->add_option("--out,-o", o.out,
                   "Output CSV file (default: standard output), renamed into place when complete");
   cmd->add_flag("--quiet,-q", o.quiet, "Do not print the progress and summary lines");
@@ -110,7 +114,7 @@ CLI::App* add_sweep_command(CLI::App& app, SweepOptions& o) {
 int run_sweep(const SweepOptions& o) {
   if (!o.merge.empty()) {
     if (!o.scene.empty() || !o.varies.empty() || !o.sets.empty() || !o.shard.empty() ||
-        !o.summary.empty() || !o.against.empty())
+        !o.summary.empty() || !o.against.empty() || !o.instruction_set.empty())
       throw SceneError("--merge takes only the parts and --out: no SCENE, --vary, --set, ...");
     return merge_parts(o.merge, o.out);
   }
@@ -121,6 +125,15 @@ int run_sweep(const SweepOptions& o) {
   const bool against = !o.against.empty();
   const std::vector<Quantity> quantities = parse_summary(o.summary, against);
   const Shard shard = parse_shard(o.shard);
+  if (!o.instruction_set.empty()) {
+    const auto supported = Ensemble::supported_instruction_sets();
+    if (std::find(supported.begin(), supported.end(), o.instruction_set) == supported.end()) {
+      std::string names;
+      for (auto n : supported) names += (names.empty() ? "" : ", ") + std::string(n);
+      throw SceneError("--instruction-set " + o.instruction_set +
+                       ": not one this processor runs (" + names + ")");
+    }
+  }
   const int threads = o.threads > 0
                           ? o.threads
                           : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
@@ -140,8 +153,8 @@ int run_sweep(const SweepOptions& o) {
   std::fputs(head.c_str(), file.stream());
 
   // Progress only where someone watches it: stderr is a terminal that the CSV does not go to.
-  const SweepRun run = run_points(grid, quantities, against, shard, threads, file,
-                                  !o.quiet && isatty(2) && !(to_stdout && isatty(1)));
+  const SweepRun run = run_points(grid, quantities, against, shard, threads, o.instruction_set,
+                                  file, !o.quiet && isatty(2) && !(to_stdout && isatty(1)));
   file.commit();
   if (!o.quiet)
     std::fprintf(stderr, "impact sweep: %lld points, %lld failed, %d threads, %.3f s wall\n",

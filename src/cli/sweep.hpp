@@ -12,7 +12,8 @@ struct SweepOptions {
   std::string scene;
   std::vector<std::string> sets, varies;
   std::string summary, against, shard;
-  int threads = 0;  // 0: one per core
+  std::string instruction_set;  // the ensemble's vector code; empty: the widest there is
+  int threads = 0;              // 0: one per core
   std::vector<std::string> merge;
   std::string out;
   bool quiet = false;

@@ -142,19 +142,28 @@ std::string csv_header(const SweepGrid& grid, const std::vector<Quantity>& quant
   return header + "failure\n";
 }
 
-void append_row(std::string& out, const SweepGrid& grid, std::int64_t i,
-                const std::vector<Quantity>& quantities, const PointResult& result) {
-  const std::size_t fields = grid.axes().size() + quantities.size();
+RowWriter::RowWriter(const SweepGrid& grid, const std::vector<Quantity>& quantities)
+    : grid_(grid),
+      quantities_(quantities),
+      index_(grid.axes().size(), -1),
+      text_(grid.axes().size()) {}
+
+void RowWriter::append(std::string& out, std::int64_t i, const PointResult& result) {
+  for (std::size_t k = 0; k < text_.size(); ++k) {
+    const std::int64_t j = grid_.index(i, k);
+    if (j != index_[k]) {
+      index_[k] = j;
+      text_[k] = grid_.axes()[k].text(j);
+    }
+    out += text_[k];
+    out += ',';
+  }
   const std::size_t start = out.size();
-  out.resize(start + fields * (kFieldChars + 1));
+  out.resize(start + quantities_.size() * (kFieldChars + 1));
   char* const begin = out.data() + start;
   char* const end = out.data() + out.size();
   char* p = begin;
-  for (std::size_t k = 0; k < grid.axes().size(); ++k) {
-    p = put(p, end, grid.axes()[k].value(grid.index(i, k)));
-    *p++ = ',';
-  }
-  for (Quantity q : quantities) {
+  for (Quantity q : quantities_) {
     if (result.outcome) p = put_quantity(p, end, q, *result.outcome, result.wall_s);
     *p++ = ',';
   }

@@ -49,11 +49,22 @@ struct PointResult {
 
 // "time.h,rest_time,E_T,failure\n": the varied keys, the quantities, the failure reason.
 std::string csv_header(const SweepGrid& grid, const std::vector<Quantity>& quantities);
-// Point i's row: its values as round_trip writes them (the --set text that gives them back), the
-// quantities (empty where the point failed; nan for a time that does not exist), and the failure
-// reason in double quotes (empty where it did not fail).
-void append_row(std::string& out, const SweepGrid& grid, std::int64_t i,
-                const std::vector<Quantity>& quantities, const PointResult& result);
+// Writes rows. Point i's row: its values as round_trip writes them (the --set text that gives them
+// back), the quantities (empty where the point failed; nan for a time that does not exist), and
+// the failure reason in double quotes (empty where it did not fail).
+class RowWriter {
+ public:
+  RowWriter(const SweepGrid& grid, const std::vector<Quantity>& quantities);
+  void append(std::string& out, std::int64_t i, const PointResult& result);
+
+ private:
+  const SweepGrid& grid_;
+  const std::vector<Quantity>& quantities_;
+  // Each axis's value in the row before and its text: only the axes that changed are formatted
+  // again (one of two in a 1000 x 1000 sweep; a number in round-trip precision costs ~100 ns).
+  std::vector<std::int64_t> index_;
+  std::vector<std::string> text_;
+};
 
 // The first line of shard K of N (1-based) of a sweep of `points` points with this fingerprint.
 std::string part_line(std::int64_t k, std::int64_t n, std::int64_t points,

@@ -34,8 +34,12 @@ constexpr std::int64_t kMinEnsemble = 64;
 class Runner {
  public:
   Runner(const SweepGrid& grid, const std::vector<Quantity>& quantities, bool against_exact,
-         Shard shard)
-      : grid_(grid), quantities_(quantities), against_(against_exact), shard_(shard) {
+         Shard shard, const std::string& instruction_set)
+      : grid_(grid),
+        quantities_(quantities),
+        against_(against_exact),
+        shard_(shard),
+        instruction_set_(instruction_set) {
     points_ = shard_points(grid, shard);
     // Points on one grid must be close in the order to share a chunk: a sweep whose grid changes
     // every few points runs point by point, in chunks small enough for every thread to get some.
@@ -69,10 +73,11 @@ class Runner {
     }
     run_together(first, candidates, results);
     Output out;
+    RowWriter rows(grid_, quantities_);
     for (std::int64_t p = 0; p < count; ++p) {
       const PointResult& r = results[static_cast<std::size_t>(p)];
       out.failed += !r.outcome;
-      append_row(out.text, grid_, point(first + p), quantities_, r);
+      rows.append(out.text, point(first + p), r);
     }
     return out;
   }
@@ -132,7 +137,7 @@ class Runner {
       }
       summaries.assign(models.size(), std::nullopt);
       const auto start = timed_ ? Clock::now() : Clock::time_point();
-      summarize_together(begin->kind, begin->grid, models, initial, summaries);
+      summarize_together(begin->kind, begin->grid, models, initial, summaries, instruction_set_);
       const double share = timed_ ? seconds_since(start) / static_cast<double>(models.size()) : 0;
       for (auto c = begin; c != end; ++c) {
         PointResult& r = results[static_cast<std::size_t>(c->position)];
@@ -153,6 +158,7 @@ class Runner {
   const std::vector<Quantity>& quantities_;
   bool against_;
   Shard shard_;
+  const std::string& instruction_set_;
   std::int64_t points_ = 0, chunk_ = 1;
   bool timed_ = false;
 };
@@ -277,9 +283,9 @@ std::int64_t shard_points(const SweepGrid& grid, const Shard& shard) {
 }
 
 SweepRun run_points(const SweepGrid& grid, const std::vector<Quantity>& quantities,
-                    bool against_exact, const Shard& shard, int threads, AtomicFile& file,
-                    bool progress) {
-  const Runner runner(grid, quantities, against_exact, shard);
+                    bool against_exact, const Shard& shard, int threads,
+                    const std::string& instruction_set, AtomicFile& file, bool progress) {
+  const Runner runner(grid, quantities, against_exact, shard, instruction_set);
   SweepProgress shown(progress, runner.points(), Clock::now());
   const std::int64_t failed = run_chunks(runner, threads, file, shown);
   return {runner.points(), failed};

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "cli/sweep_csv.hpp"
@@ -26,8 +27,9 @@ struct SweepRun {
 // Runs the shard's points on `threads` threads and appends their rows to `file` in the order of
 // the points, so that the bytes do not depend on the number of threads. With `progress`, a line on
 // standard error shows the points done, the rate and the time left.
+// `instruction_set` is the ensemble's vector code (empty: the widest this processor has).
 SweepRun run_points(const SweepGrid& grid, const std::vector<Quantity>& quantities,
-                    bool against_exact, const Shard& shard, int threads, AtomicFile& file,
-                    bool progress);
+                    bool against_exact, const Shard& shard, int threads,
+                    const std::string& instruction_set, AtomicFile& file, bool progress);
 
 }  // namespace impact::cli

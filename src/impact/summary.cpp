@@ -47,11 +47,12 @@ std::optional<EnsembleKind> ensemble_kind(const Scene& scene) {
 }
 
 void summarize_together(const EnsembleKind& kind, const Grid& grid, std::span<const Model> models,
-                        std::span<const State> initial,
-                        std::span<std::optional<PointSummary>> out) {
+                        std::span<const State> initial, std::span<std::optional<PointSummary>> out,
+                        std::string_view instruction_set) {
   if (out.size() != models.size())
     throw std::invalid_argument("summarize_together: as many outputs as models are needed");
   Ensemble ensemble(kind.method, models, initial, grid.h, kind.theta);
+  if (!instruction_set.empty()) ensemble.use(instruction_set);
   ensemble.keep_summary();
   ensemble.advance(grid.steps);
   for (std::size_t i = 0; i < out.size(); ++i) {

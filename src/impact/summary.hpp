@@ -7,6 +7,7 @@
 #include <limits>
 #include <optional>
 #include <span>
+#include <string_view>
 
 #include "impact/ensemble.hpp"
 #include "impact/error_norms.hpp"
@@ -78,7 +79,10 @@ std::optional<EnsembleKind> ensemble_kind(const Scene& scene);
 // Many points on one grid with one ensemble method, stepped together; out[i] is the summary of
 // point i, bit-identical to summarize() of its scene, or nullopt where a step gave a non-finite
 // value (summarize() then names the step and the reason).
+// `instruction_set` picks the ensemble's vector code (Ensemble::use; all give the same bits), empty
+// for the widest this processor has.
 void summarize_together(const EnsembleKind& kind, const Grid& grid, std::span<const Model> models,
-                        std::span<const State> initial, std::span<std::optional<PointSummary>> out);
+                        std::span<const State> initial, std::span<std::optional<PointSummary>> out,
+                        std::string_view instruction_set = {});
 
 }  // namespace impact
