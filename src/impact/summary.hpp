@@ -36,6 +36,8 @@ PointSummary finish_summary(const SummaryLanes<double>& lanes, const Model& mode
 // An observer for simulate() that builds the PointSummary as the run streams.
 class SummaryObserver {
  public:
+  static constexpr bool kStepsLocally = true;  // simulate() keeps the running values in registers
+
   SummaryObserver(const Model& model, const Grid& grid) : model_(model), grid_(grid) {}
 
   void operator()(std::int64_t l, const State& s, const StepInfo& info) {
