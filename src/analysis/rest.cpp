@@ -65,12 +65,9 @@ RestAnalysis RestObserver::result() const {
   analysis.episodes = contacts_.episodes();
   analysis.energy_initial = energy_initial_;
   analysis.energy_final = energy_final_;
-  analysis.impacts = static_cast<std::int64_t>(analysis.episodes.size());
   analysis.energy_mean = energy_sum_ / static_cast<double>(grid_.steps + 1);
-  if (contacts_.in_contact() && analysis.episodes.back().steps >= kMinRestSteps) {
-    analysis.rest_time = grid_.t(analysis.episodes.back().first_step + 1);
-    --analysis.impacts;
-  }
+  analysis.rest_time = rest_time(contacts_.count(), grid_);
+  analysis.impacts = impacts(contacts_.count());
   return analysis;
 }
 

@@ -36,15 +36,10 @@ struct RunStats {
 };
 RunStats run_stats(const std::vector<Sample>& run, double h);
 
-// Shortest final episode that counts as rest: an impact of `direct` lasts one step, or two when
-// theta > 1/2; with a COR every scheme impact lasts one step.
-constexpr std::int64_t kMinRestSteps = 3;
-
 struct RestAnalysis {
   std::vector<ContactEpisode> episodes;
-  // t_{l+1} for the first step l of a final episode that lasts to T and at least kMinRestSteps
-  // steps: the first grid time from which the particle never leaves the floor; nullopt when it is
-  // still bouncing at T.
+  // rest_time() of contact.hpp: t_{l+1} for the first step l of a final episode that lasts to T
+  // and at least kMinRestSteps steps; nullopt when the particle is still bouncing at T.
   std::optional<double> rest_time;
   std::int64_t impacts = 0;  // episodes before rest (all episodes when it does not rest)
   double energy_initial = 0, energy_final = 0;  // E^0 and E^n

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "cli/plot.hpp"
+#include "cli/sweep.hpp"
 #include "impact/error_norms.hpp"
 #include "impact/output.hpp"
 #include "impact/registry.hpp"
@@ -233,6 +234,9 @@ int main(int argc, char** argv) {
   plot_cmd->add_option("--out,-o", plot_out,
                        "The figure: .png, .pdf or .svg (default: the CSV's name with .png)");
 
+  impact::cli::SweepOptions sweep;
+  CLI::App* sweep_cmd = impact::cli::add_sweep_command(app, sweep);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -256,6 +260,7 @@ int main(int argc, char** argv) {
   }
   bool in_place = true;
   try {
+    if (sweep_cmd->parsed()) return impact::cli::run_sweep(sweep);
     return run(scene_path, overrides, out_path, quiet, against == "exact", in_place);
   } catch (const impact::SceneError& e) {
     std::fprintf(stderr, "impact: error: %s\n", e.what());

@@ -7,7 +7,7 @@ namespace impact {
 bool ContactDetector::add_step(std::int64_t l, const State& before, const State& after,
                                double contact_force) {
   const bool contact = is_contact_step(model_, after, contact_force);
-  if (contact && !in_contact_) {
+  if (contact && !in_contact()) {
     recording_ = episodes_.size() < max_episodes_;
     if (recording_) {
       ContactEpisode e;
@@ -27,7 +27,7 @@ bool ContactDetector::add_step(std::int64_t l, const State& before, const State&
     e.energy_after = energy(model_, after);
     e.floor_speed_out = floor_speed(after);
   }
-  in_contact_ = contact;
+  count_contact(count_, contact);
   return contact;
 }
 

@@ -11,19 +11,79 @@
 //
 // A contact episode is a maximal run of consecutive contact steps: one impact (one step, or two
 // when a scheme holds the particle on the floor) or, when it lasts to the end of the run, rest.
+//
+// Rest: the particle rests from t_{l+1} when the run ends in an episode that starts with step l and
+// lasts at least kMinRestSteps steps (Figure 4; experiments/figure4/README.md, "Rest time").
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "impact/model.hpp"
 
 namespace impact {
 
+// The contact-step rule for one particle (Real = double, Mask = bool) or a vector of particles (the
+// ensemble, ensemble.hpp; Mask its comparison result). Written through `contact` because a function
+// returning a vector type would change the ABI between instruction sets.
+template <class Real, class Mask>
+void is_contact_step(const Real& phi, const Real& u_after, const Real& contact_force,
+                     Mask& contact) {
+  contact = contact_force > u_after - phi;
+}
+
 inline bool is_contact_step(const Model& model, const State& after, double contact_force) {
-  return contact_force > after.u - model.phi;
+  bool contact;
+  is_contact_step(model.phi, after.u, contact_force, contact);
+  return contact;
+}
+
+// What a run needs to know about its contact steps in O(1) memory: how many, how many episodes,
+// and how long the episode it is in has lasted. Counts are held in Real (a double, or a vector of
+// doubles in the ensemble), exact since a run has at most 2^53 steps (Grid).
+template <class Real>
+struct ContactCount {
+  Real steps{};     // contact steps so far
+  Real episodes{};  // contact episodes so far
+  Real run{};       // length of the episode the last step belongs to; 0 after a free step
+};
+
+// Adds a step; `contact` is is_contact_step()'s result for it. Each selection is on one
+// comparison, so that a vector of particles takes the same operations as one particle (combined
+// masks made GCC build AVX-512 masks lane by lane, ensemble.cpp).
+template <class Real, class Mask>
+void count_contact(ContactCount<Real>& c, const Mask& contact) {
+  c.steps = contact ? c.steps + 1 : c.steps;
+  c.run = contact ? c.run + 1 : Real{};
+  c.episodes = c.run == 1 ? c.episodes + 1 : c.episodes;
+}
+
+// Shortest final episode that counts as rest: an impact of `direct` lasts one step, or two when
+// theta > 1/2; with a COR every scheme impact lasts one step.
+constexpr std::int64_t kMinRestSteps = 3;
+
+// For the count of a whole run on `grid`: t_{l+1} for the first step l of the final episode when
+// the run ends in one of at least kMinRestSteps steps (l = steps - run), the first grid time from
+// which the particle never leaves the floor; nullopt when it is still bouncing at the end.
+inline std::optional<double> rest_time(const ContactCount<double>& c, const Grid& grid) {
+  if (c.run < static_cast<double>(kMinRestSteps)) return std::nullopt;
+  return grid.t(grid.steps - static_cast<std::int64_t>(c.run) + 1);
+}
+
+// Episodes before rest (all of them when the particle does not rest).
+inline std::int64_t impacts(const ContactCount<double>& c) {
+  return static_cast<std::int64_t>(c.episodes) - (c.run >= static_cast<double>(kMinRestSteps));
+}
+
+// The fraction of step l flown before the floor along the straight line from `before` (the state
+// at t_l), as a time: (u^l - phi) / |v^l| for v^l < 0 (0 for a particle already below the floor),
+// else 0. t_l plus this is where a scheme's first contact is placed (error_norms.hpp, summary.hpp).
+inline double floor_crossing(const Model& model, const State& before) {
+  return before.v < 0 ? std::fmax(0.0, (before.u - model.phi) / -before.v) : 0.0;
 }
 
 struct ContactEpisode {
@@ -50,7 +110,8 @@ struct ContactEpisode {
 };
 
 // Finds the contact episodes of a run as it streams, step by step, in O(episodes) memory; episodes
-// after the first `max_episodes` are counted as contact steps but not recorded.
+// after the first `max_episodes` are counted (count()) but not recorded, so max_episodes = 0 counts
+// in O(1) memory without allocating.
 class ContactDetector {
  public:
   ContactDetector(const Model& model, double h,
@@ -63,7 +124,9 @@ class ContactDetector {
 
   const std::vector<ContactEpisode>& episodes() const { return episodes_; }
   // The last step added was a contact step (of a recorded episode or not).
-  bool in_contact() const { return in_contact_; }
+  bool in_contact() const { return count_.run > 0; }
+  // All contact steps and episodes, recorded or not.
+  const ContactCount<double>& count() const { return count_; }
 
  private:
   double flight_fraction(const State& s) const;
@@ -73,7 +136,8 @@ class ContactDetector {
   double h_;
   std::size_t max_episodes_;
   std::vector<ContactEpisode> episodes_;
-  bool in_contact_ = false, recording_ = false;
+  ContactCount<double> count_;
+  bool recording_ = false;
 };
 
 }  // namespace impact

@@ -54,6 +54,7 @@ void direct_step(DirectLanes<Real>& s, const Real& f, const Real& cor, const Mas
 
 struct DirectParams {
   FreeFlightForm free_flight = FreeFlightForm::closed_form;
+  bool operator==(const DirectParams&) const = default;
 };
 
 class Direct {

@@ -44,25 +44,84 @@ template <class T>
   std::memcpy(p, &x, sizeof x);
 }
 
+// The columns of the summary (Ensemble::keep_summary), each at its first particle.
+struct SummaryColumns {
+  const double* phi;
+  double* u;  // u = phi + gap as the single-particle solvers return it (the initial u at first)
+  double *steps, *episodes, *run, *max_u, *first_l, *first_u, *first_v, *poison;
+};
+
 // The columns of the ensemble, each at its first particle.
 struct Columns {
   const double *f, *cor;
   const std::int64_t* has_cor;
   double *gap, *v, *force, *anchor_gap, *anchor_v, *since;
+  SummaryColumns summary;
 };
+
+template <class Real>
+[[gnu::always_inline]] inline void load_summary(SummaryLanes<Real>& s, Real& phi, Real& u,
+                                                Real& poison, const SummaryColumns& c,
+                                                Eigen::Index i) {
+  load(phi, c.phi + i);
+  load(u, c.u + i);
+  load(s.contacts.steps, c.steps + i);
+  load(s.contacts.episodes, c.episodes + i);
+  load(s.contacts.run, c.run + i);
+  load(s.max_u, c.max_u + i);
+  load(s.first_l, c.first_l + i);
+  load(s.first_u, c.first_u + i);
+  load(s.first_v, c.first_v + i);
+  load(poison, c.poison + i);
+}
+
+template <class Real>
+[[gnu::always_inline]] inline void store_summary(const SummaryColumns& c, Eigen::Index i,
+                                                 const SummaryLanes<Real>& s, const Real& u,
+                                                 const Real& poison) {
+  store(c.u + i, u);
+  store(c.steps + i, s.contacts.steps);
+  store(c.episodes + i, s.contacts.episodes);
+  store(c.run + i, s.contacts.run);
+  store(c.max_u + i, s.max_u);
+  store(c.first_l + i, s.first_l);
+  store(c.first_u + i, s.first_u);
+  store(c.first_v + i, s.first_v);
+  store(c.poison + i, poison);
+}
+
+// After a step from (u_before, v_before) at t_l, l in every lane: the summary, and the poison, the
+// sum of every u^{l+1} + N^l, which is not finite for good once one of them was not (an overflow
+// of finite values only makes a lane be re-run alone). A non-finite v makes u or N non-finite in
+// the same step: in direct, v_free overflows only with the free flight u_free (which is u, or
+// enters N), and v_contact is -COR v^l or v_free + h N; in moreau_jean, u is integrated from v.
+template <class Real>
+[[gnu::always_inline]] inline void summarize_step(SummaryLanes<Real>& s, Real& poison,
+                                                  const Real& l, const Real& phi,
+                                                  const Real& u_before, const Real& v_before,
+                                                  const Real& u, const Real& force) {
+  summary_step(s, l, phi, u_before, v_before, u, force);
+  poison += u + force;
+}
 
 // A block of Vectors vectors of Lanes particles is loaded into registers, stepped `steps` times and
 // stored back: the step is latency-bound (each step's contact test depends on the last), so several
-// independent vectors are interleaved to keep the SIMD units busy.
-template <int Lanes, int Vectors>
+// independent vectors are interleaved to keep the SIMD units busy. With Summarize, each step also
+// updates the summary on u = phi + gap, the u the single-particle solvers return (u^l is carried
+// from the step before, so that u^0 is the initial u as given); `first_step` is the index l of the
+// first of the steps.
+template <int Lanes, int Vectors, bool Summarize>
 [[gnu::always_inline]] inline void direct_blocks(const Columns& c, Eigen::Index padded,
-                                                 std::int64_t steps, double h) {
+                                                 std::int64_t first_step, std::int64_t steps,
+                                                 double h) {
   using Real = typename LaneTypes<Lanes>::Real;
   using Mask = typename LaneTypes<Lanes>::Mask;
   for (Eigen::Index first = 0; first < padded; first += Lanes * Vectors) {
     DirectLanes<Real> s[Vectors];
     Real f[Vectors], cor[Vectors];
     Mask has_cor[Vectors];
+    [[maybe_unused]] SummaryLanes<Real> summary[Vectors];
+    [[maybe_unused]] Real phi[Vectors], u[Vectors], poison[Vectors];
     for (int b = 0; b < Vectors; ++b) {
       const Eigen::Index i = first + b * Lanes;
       load(f[b], c.f + i);
@@ -74,9 +133,22 @@ template <int Lanes, int Vectors>
       load(s[b].anchor_gap, c.anchor_gap + i);
       load(s[b].anchor_v, c.anchor_v + i);
       load(s[b].since, c.since + i);
+      if constexpr (Summarize) load_summary(summary[b], phi[b], u[b], poison[b], c.summary, i);
     }
-    for (std::int64_t l = 0; l < steps; ++l)
-      for (int b = 0; b < Vectors; ++b) direct_step(s[b], f[b], cor[b], has_cor[b], h);
+    if constexpr (Summarize) {
+      Real l = Real{} + static_cast<double>(first_step);
+      for (std::int64_t k = 0; k < steps; ++k, l += 1)
+        for (int b = 0; b < Vectors; ++b) {
+          const Real u_before = u[b], v_before = s[b].v;
+          direct_step(s[b], f[b], cor[b], has_cor[b], h);
+          u[b] = phi[b] + s[b].gap;
+          summarize_step(summary[b], poison[b], l, phi[b], u_before, v_before, u[b],
+                         s[b].contact_force);
+        }
+    } else {
+      for (std::int64_t k = 0; k < steps; ++k)
+        for (int b = 0; b < Vectors; ++b) direct_step(s[b], f[b], cor[b], has_cor[b], h);
+    }
     for (int b = 0; b < Vectors; ++b) {
       const Eigen::Index i = first + b * Lanes;
       store(c.gap + i, s[b].gap);
@@ -85,16 +157,20 @@ template <int Lanes, int Vectors>
       store(c.anchor_gap + i, s[b].anchor_gap);
       store(c.anchor_v + i, s[b].anchor_v);
       store(c.since + i, s[b].since);
+      if constexpr (Summarize) store_summary(c.summary, i, summary[b], u[b], poison[b]);
     }
   }
 }
 
-template <int Lanes, int Vectors>
+template <int Lanes, int Vectors, bool Summarize>
 [[gnu::always_inline]] inline void moreau_jean_blocks(const Columns& c, Eigen::Index padded,
-                                                      std::int64_t steps, double theta, double h) {
+                                                      std::int64_t first_step, std::int64_t steps,
+                                                      double theta, double h) {
   using Real = typename LaneTypes<Lanes>::Real;
   for (Eigen::Index first = 0; first < padded; first += Lanes * Vectors) {
     Real gap[Vectors], v[Vectors], force[Vectors], f[Vectors], e[Vectors];
+    [[maybe_unused]] SummaryLanes<Real> summary[Vectors];
+    [[maybe_unused]] Real phi[Vectors], u[Vectors], poison[Vectors];
     for (int b = 0; b < Vectors; ++b) {
       const Eigen::Index i = first + b * Lanes;
       load(f[b], c.f + i);
@@ -102,56 +178,98 @@ template <int Lanes, int Vectors>
       load(gap[b], c.gap + i);
       load(v[b], c.v + i);
       load(force[b], c.force + i);
+      if constexpr (Summarize) load_summary(summary[b], phi[b], u[b], poison[b], c.summary, i);
     }
-    for (std::int64_t l = 0; l < steps; ++l)
-      for (int b = 0; b < Vectors; ++b)
-        moreau_jean_step(gap[b], v[b], force[b], f[b], e[b], theta, h);
+    if constexpr (Summarize) {
+      Real l = Real{} + static_cast<double>(first_step);
+      for (std::int64_t k = 0; k < steps; ++k, l += 1)
+        for (int b = 0; b < Vectors; ++b) {
+          const Real u_before = u[b], v_before = v[b];
+          moreau_jean_step(gap[b], v[b], force[b], f[b], e[b], theta, h);
+          u[b] = phi[b] + gap[b];
+          summarize_step(summary[b], poison[b], l, phi[b], u_before, v_before, u[b], force[b]);
+        }
+    } else {
+      for (std::int64_t k = 0; k < steps; ++k)
+        for (int b = 0; b < Vectors; ++b)
+          moreau_jean_step(gap[b], v[b], force[b], f[b], e[b], theta, h);
+    }
     for (int b = 0; b < Vectors; ++b) {
       const Eigen::Index i = first + b * Lanes;
       store(c.gap + i, gap[b]);
       store(c.v + i, v[b]);
       store(c.force + i, force[b]);
+      if constexpr (Summarize) store_summary(c.summary, i, summary[b], u[b], poison[b]);
     }
   }
 }
 
+// The lanes of one block of every level, method and kernel (below) divide this.
+constexpr Eigen::Index kPadding = 192;
+
 // One entry point per instruction set, each compiled for it with the kernels inlined. The block
 // shapes (lanes x vectors) were the fastest of 2..8 vectors on an AMD EPYC (Zen 4): direct keeps
-// 10 values per vector in registers, moreau_jean 6 (experiments/performance/README.md).
-void baseline_direct(const Columns& c, Eigen::Index n, std::int64_t steps, double h) {
-  direct_blocks<2, 6>(c, n, steps, h);
+// 10 values per vector in registers, moreau_jean 6 (experiments/performance/README.md). The
+// summary adds 8 values per vector that change at every step; with them, 3 vectors for direct and
+// 4 for moreau_jean were the fastest of 2, 3, 4 and 6 (README.md, "Sweeps").
+template <int Lanes, int Vectors, int SummaryVectors>
+[[gnu::always_inline]] inline void direct_entry(const Columns& c, Eigen::Index n,
+                                                std::int64_t first_step, std::int64_t steps,
+                                                double h, bool summarize) {
+  static_assert(kPadding % (Lanes * Vectors) == 0 && kPadding % (Lanes * SummaryVectors) == 0);
+  if (summarize)
+    direct_blocks<Lanes, SummaryVectors, true>(c, n, first_step, steps, h);
+  else
+    direct_blocks<Lanes, Vectors, false>(c, n, first_step, steps, h);
 }
-void baseline_moreau_jean(const Columns& c, Eigen::Index n, std::int64_t steps, double theta,
-                          double h) {
-  moreau_jean_blocks<2, 8>(c, n, steps, theta, h);
+template <int Lanes, int Vectors, int SummaryVectors>
+[[gnu::always_inline]] inline void moreau_jean_entry(const Columns& c, Eigen::Index n,
+                                                     std::int64_t first_step, std::int64_t steps,
+                                                     double theta, double h, bool summarize) {
+  static_assert(kPadding % (Lanes * Vectors) == 0 && kPadding % (Lanes * SummaryVectors) == 0);
+  if (summarize)
+    moreau_jean_blocks<Lanes, SummaryVectors, true>(c, n, first_step, steps, theta, h);
+  else
+    moreau_jean_blocks<Lanes, Vectors, false>(c, n, first_step, steps, theta, h);
+}
+
+constexpr int kDirectSummaryVectors = 3, kMoreauJeanSummaryVectors = 4;
+
+void baseline_direct(const Columns& c, Eigen::Index n, std::int64_t l, std::int64_t steps, double h,
+                     bool summarize) {
+  direct_entry<2, 6, kDirectSummaryVectors>(c, n, l, steps, h, summarize);
+}
+void baseline_moreau_jean(const Columns& c, Eigen::Index n, std::int64_t l, std::int64_t steps,
+                          double theta, double h, bool summarize) {
+  moreau_jean_entry<2, 8, kMoreauJeanSummaryVectors>(c, n, l, steps, theta, h, summarize);
 }
 #if defined(__x86_64__) && defined(__GNUC__)
 [[gnu::target("avx2"), IMPACT_NO_CONTRACT]] void avx2_direct(const Columns& c, Eigen::Index n,
-                                                             std::int64_t steps, double h) {
-  direct_blocks<4, 6>(c, n, steps, h);
+                                                             std::int64_t l, std::int64_t steps,
+                                                             double h, bool summarize) {
+  direct_entry<4, 6, kDirectSummaryVectors>(c, n, l, steps, h, summarize);
 }
 [[gnu::target("avx2"), IMPACT_NO_CONTRACT]] void avx2_moreau_jean(const Columns& c, Eigen::Index n,
+                                                                  std::int64_t l,
                                                                   std::int64_t steps, double theta,
-                                                                  double h) {
-  moreau_jean_blocks<4, 8>(c, n, steps, theta, h);
+                                                                  double h, bool summarize) {
+  moreau_jean_entry<4, 8, kMoreauJeanSummaryVectors>(c, n, l, steps, theta, h, summarize);
 }
 [[gnu::target("avx512f"), IMPACT_NO_CONTRACT]] void avx512_direct(const Columns& c, Eigen::Index n,
-                                                                  std::int64_t steps, double h) {
-  direct_blocks<8, 6>(c, n, steps, h);
+                                                                  std::int64_t l,
+                                                                  std::int64_t steps, double h,
+                                                                  bool summarize) {
+  direct_entry<8, 6, kDirectSummaryVectors>(c, n, l, steps, h, summarize);
 }
-[[gnu::target("avx512f"), IMPACT_NO_CONTRACT]] void avx512_moreau_jean(const Columns& c,
-                                                                       Eigen::Index n,
-                                                                       std::int64_t steps,
-                                                                       double theta, double h) {
-  moreau_jean_blocks<8, 8>(c, n, steps, theta, h);
+[[gnu::target("avx512f"), IMPACT_NO_CONTRACT]] void avx512_moreau_jean(
+    const Columns& c, Eigen::Index n, std::int64_t l, std::int64_t steps, double theta, double h,
+    bool summarize) {
+  moreau_jean_entry<8, 8, kMoreauJeanSummaryVectors>(c, n, l, steps, theta, h, summarize);
 }
 #endif
 
 enum Level { kBaseline, kAvx2, kAvx512 };
 constexpr std::string_view kLevelNames[] = {"baseline", "avx2", "avx512f"};
-// The lanes of one block of every level and method (direct: 2, 4, 8 lanes x 6 vectors;
-// moreau_jean: x 8) divide this.
-constexpr Eigen::Index kPadding = 192;
 
 bool supported(int level) {
 #if defined(__x86_64__) && defined(__GNUC__)
@@ -207,7 +325,9 @@ Ensemble::Ensemble(EnsembleMethod method, std::span<const Model> models,
   // Direct starts its free flight at the initial state (DirectLanes).
   anchor_gap_ = gap_;
   anchor_v_ = v_;
-  u_ = phi_ + gap_;
+  // The state at t_0 is the initial state as given (phi + (u0 - phi) may round away from u0).
+  u_.setZero(padded_);
+  for (Eigen::Index i = 0; i < size_; ++i) u_[i] = initial[static_cast<std::size_t>(i)].u;
 }
 
 std::string_view Ensemble::instruction_set() const {
@@ -231,24 +351,49 @@ void Ensemble::use(std::string_view instruction_set) {
                               "\" is unknown or not supported by this processor");
 }
 
+void Ensemble::keep_summary() {
+  if (steps_done_ != 0)
+    throw std::logic_error("Ensemble::keep_summary: call it before the first advance()");
+  summarize_ = true;
+  for (Eigen::ArrayXd* column :
+       {&steps_, &episodes_, &run_, &first_l_, &first_u_, &first_v_, &poison_})
+    column->setZero(padded_);
+  max_u_ = u_;  // as start_summary(): the highest position so far is u^0
+}
+
+SummaryLanes<double> Ensemble::summary(Eigen::Index i) const {
+  SummaryLanes<double> s;
+  s.contacts = {steps_[i], episodes_[i], run_[i]};
+  s.max_u = max_u_[i];
+  s.first_l = first_l_[i];
+  s.first_u = first_u_[i];
+  s.first_v = first_v_[i];
+  return s;
+}
+
 void Ensemble::advance(std::int64_t steps) {
   if (steps <= 0) return;
-  const Columns c{f_.data(),     cor_.data(),        has_cor_.data(),  gap_.data(),  v_.data(),
-                  force_.data(), anchor_gap_.data(), anchor_v_.data(), since_.data()};
+  const SummaryColumns summary{phi_.data(),     u_.data(),     steps_.data(),   episodes_.data(),
+                               run_.data(),     max_u_.data(), first_l_.data(), first_u_.data(),
+                               first_v_.data(), poison_.data()};
+  const Columns c{f_.data(),     cor_.data(),        has_cor_.data(),  gap_.data(),   v_.data(),
+                  force_.data(), anchor_gap_.data(), anchor_v_.data(), since_.data(), summary};
   const bool direct = method_ == EnsembleMethod::direct;
+  const std::int64_t l = steps_done_;
   switch (level_) {
 #if defined(__x86_64__) && defined(__GNUC__)
     case kAvx512:
-      direct ? avx512_direct(c, padded_, steps, h_)
-             : avx512_moreau_jean(c, padded_, steps, theta_, h_);
+      direct ? avx512_direct(c, padded_, l, steps, h_, summarize_)
+             : avx512_moreau_jean(c, padded_, l, steps, theta_, h_, summarize_);
       break;
     case kAvx2:
-      direct ? avx2_direct(c, padded_, steps, h_) : avx2_moreau_jean(c, padded_, steps, theta_, h_);
+      direct ? avx2_direct(c, padded_, l, steps, h_, summarize_)
+             : avx2_moreau_jean(c, padded_, l, steps, theta_, h_, summarize_);
       break;
 #endif
     default:
-      direct ? baseline_direct(c, padded_, steps, h_)
-             : baseline_moreau_jean(c, padded_, steps, theta_, h_);
+      direct ? baseline_direct(c, padded_, l, steps, h_, summarize_)
+             : baseline_moreau_jean(c, padded_, l, steps, theta_, h_, summarize_);
   }
   u_ = phi_ + gap_;  // as the single-particle solvers return u = phi + gap
   steps_done_ += steps;

@@ -12,12 +12,14 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <string_view>
 #include <vector>
 
 #include "impact/model.hpp"
+#include "impact/summary_lanes.hpp"
 
 namespace impact {
 
@@ -45,6 +47,13 @@ class Ensemble {
   Column contact_force() const { return force_.head(size_); }
   State state(Eigen::Index i) const { return {u_[i], v_[i]}; }
 
+  // From here on (before the first advance(), else std::logic_error) every step also updates each
+  // particle's summary (summary_lanes.hpp), as a SummaryObserver does for one particle, and notes
+  // whether it gave a non-finite u, v or N^l (where simulate() would have stopped).
+  void keep_summary();
+  SummaryLanes<double> summary(Eigen::Index i) const;
+  bool failed(Eigen::Index i) const { return !std::isfinite(poison_[i]); }
+
   // The vector code advance() runs: "avx512f" (8 lanes), "avx2" (4 lanes) or "baseline" (2 lanes,
   // SSE2 on x86-64). The constructor picks the widest this processor supports; use() picks
   // another one of supported_instruction_sets() (all give the same bits), else throws
@@ -63,8 +72,12 @@ class Ensemble {
   Eigen::ArrayXd phi_, f_, cor_;  // cor_: the COR (direct, 0 without one) or e (moreau_jean)
   Eigen::Array<std::int64_t, Eigen::Dynamic, 1> has_cor_;  // -1 where the model has a COR
   Eigen::ArrayXd gap_, v_, force_;                         // gap u - phi, as the kernels step it
-  Eigen::ArrayXd u_;                                       // phi + gap, after each advance()
+  Eigen::ArrayXd u_;  // the initial u, then phi + gap after each advance(), as the solvers return u
   Eigen::ArrayXd anchor_gap_, anchor_v_, since_;  // direct's free-flight anchor (DirectLanes)
+  // The summary (empty unless keep_summary()): the fields of SummaryLanes, and the poison (see
+  // ensemble.cpp), finite while every step was.
+  bool summarize_ = false;
+  Eigen::ArrayXd steps_, episodes_, run_, max_u_, first_l_, first_u_, first_v_, poison_;
 };
 
 }  // namespace impact

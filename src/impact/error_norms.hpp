@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "impact/contact.hpp"
 #include "impact/exact.hpp"
 #include "impact/model.hpp"
 #include "impact/run.hpp"
@@ -23,12 +24,12 @@ struct ErrorNorms {
   RunSummary run;
 };
 
-// The error norms of one run as it streams: an observer for simulate() (call it with every step,
-// l = 0 first), then result() with the run's summary.
+// Accumulates the norms as a run streams (an observer for simulate()), so that other observers can
+// see the same run.
 class ErrorObserver {
  public:
   ErrorObserver(const Model& model, const State& initial, const Grid& grid)
-      : model_(model), grid_(grid), exact_(model, initial), previous_(initial) {}
+      : exact_(model, initial), model_(model), grid_(grid), previous_(initial) {}
 
   void operator()(std::int64_t l, const State& s, const StepInfo& info) {
     const State ref = exact_.at(grid_.t(l));
@@ -36,14 +37,13 @@ class ErrorObserver {
     e_.l1_v += grid_.h * std::fabs(s.v - ref.v);
     if (!seen_contact_ && l > 0 && info.contact_force > 0) {
       seen_contact_ = true;
-      const double crossing =
-          previous_.v < 0 ? std::fmax(0.0, (previous_.u - model_.phi) / -previous_.v) : 0.0;
-      if (auto t1 = exact_.impact_time(1)) e_.first_impact = grid_.t(l - 1) + crossing - *t1;
+      if (auto t1 = exact_.impact_time(1))
+        e_.first_impact = grid_.t(l - 1) + floor_crossing(model_, previous_) - *t1;
     }
     previous_ = s;
   }
 
-  // The norms once the run has ended, with its summary.
+  // The norms of the run that simulate() summarised as `run`.
   ErrorNorms result(const RunSummary& run) const {
     ErrorNorms e = e_;
     e.energy_end =
@@ -53,9 +53,9 @@ class ErrorObserver {
   }
 
  private:
+  ExactSolution exact_;
   Model model_;
   Grid grid_;
-  ExactSolution exact_;
   State previous_;
   bool seen_contact_ = false;
   ErrorNorms e_;

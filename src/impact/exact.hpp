@@ -62,7 +62,9 @@ class ExactSolution {
   std::optional<double> rest_;
 };
 
-struct ExactParams {};
+struct ExactParams {
+  bool operator==(const ExactParams&) const = default;
+};
 
 // The exact solution as a stepper: sampled at the grid times after the state it was initialized
 // with, so that it runs wherever a time-stepper does.

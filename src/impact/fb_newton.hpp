@@ -17,6 +17,7 @@ struct FbNewtonParams {
   double tolerance = 1e-15;  // relative residual, see FbNewton::do_step (paper: 1e-15)
   int max_iterations = 50;
   FreeFlightForm free_flight = FreeFlightForm::closed_form;
+  bool operator==(const FbNewtonParams&) const = default;
 };
 
 class FbNewton {

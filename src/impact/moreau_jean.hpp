@@ -39,6 +39,7 @@ void moreau_jean_step(Real& gap, Real& v, Real& contact_force, const Real& f, co
 
 struct MoreauJeanParams {
   double theta = 0.5;
+  bool operator==(const MoreauJeanParams&) const = default;
 };
 
 class MoreauJean {

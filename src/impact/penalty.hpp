@@ -22,6 +22,8 @@ struct PenaltyParams {
   // The ODE steps the whole run may take (a stiff contact with an implicit stepper can need 1e5
   // per grid step, minutes for T = 1); 0: automatic, 1e6 plus 1000 per grid step done.
   std::int64_t max_ode_steps = 0;
+
+  bool operator==(const PenaltyParams&) const = default;
 };
 
 // The names PenaltyParams::stepper accepts: every GSL odeiv2 stepper.

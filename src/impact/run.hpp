@@ -78,6 +78,10 @@ template <class Stepper, class Observer>
 
 }  // namespace detail
 
+// An observer with `static constexpr bool kStepsLocally = true` (and copyable): see simulate().
+template <class Observer>
+concept StepsLocally = std::remove_cvref_t<Observer>::kStepsLocally;
+
 // Initializes the stepper at (t_0, initial) and runs it over the grid; observe(l, state at t_l,
 // info of the step that ended at t_l; zero for l = 0) sees every step.
 //
@@ -92,13 +96,22 @@ template <class Stepper, class Observer>
 //  - each step's StepInfo is a fresh constant (assigned to a variable living across the loop, its
 //    13 bytes were copied with overlapping moves that defeat store-to-load forwarding);
 //  - the observer is inlined; it should do its rare work (a CSV row) out of line, on copies, so
-//    that nothing on its common path takes the address of the loop's state.
+//    that nothing on its common path takes the address of the loop's state;
+//  - an observer that updates running values of its own at every step and says so (StepsLocally)
+//    is stepped as a local copy too, copied back when the run ends, for the same reason.
 template <class Stepper, class Observer>
 [[gnu::noinline]] RunSummary simulate(Stepper& stepper, const State& initial, const Grid& grid,
                                       Observer&& observe) {
   if constexpr (std::is_move_constructible_v<Stepper> && std::is_move_assignable_v<Stepper>) {
     Stepper local = std::move(stepper);
-    const RunSummary summary = detail::step_loop(local, initial, grid, observe);
+    RunSummary summary;
+    if constexpr (StepsLocally<Observer>) {
+      std::remove_cvref_t<Observer> watcher = observe;
+      summary = detail::step_loop(local, initial, grid, watcher);
+      observe = watcher;
+    } else {
+      summary = detail::step_loop(local, initial, grid, observe);
+    }
     stepper = std::move(local);
     return summary;
   } else {

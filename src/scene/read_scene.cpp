@@ -20,9 +20,6 @@
 namespace impact {
 namespace {
 
-// 2^53: the largest step count for which every l and l*h are exact in double precision.
-constexpr double kMaxSteps = 9007199254740992.0;
-
 // A scene is a few hundred bytes; a file this large is not one (and /dev/zero would never end).
 constexpr std::size_t kMaxSceneBytes = std::size_t{1} << 20;
 
@@ -168,7 +165,7 @@ void read_time(const Reader& r, Scene& scene) {
   if (h > scene.T)
     r.fail_value("time.h", *time->get("h"), "must be <= time.T = " + show(*time->get("T")));
   const double ratio = scene.T / h;
-  if (!(ratio <= kMaxSteps))
+  if (!(ratio <= kMaxGridSteps))
     r.fail_value("time.h", *time->get("h"),
                  "T/h = " + show_number(ratio) +
                      " steps is too many to count exactly (at most 2^53 = 9007199254740992)");

@@ -12,6 +12,10 @@
 
 namespace impact {
 
+// 2^53: the largest step count T/h a scene may ask for, for which every l and l*h are exact in
+// double precision.
+inline constexpr double kMaxGridSteps = 9007199254740992.0;
+
 // Reads and validates a scene file; `overrides` are "table.key=value" strings (the value is read
 // as a TOML value, or as a string when it is a bare word) applied before validation. Throws
 // SceneError.

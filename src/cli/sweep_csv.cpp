@@ -1,0 +1,226 @@
+#include "cli/sweep_csv.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cinttypes>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "impact/output.hpp"
+#include "scene/scene_error.hpp"
+
+namespace impact::cli {
+namespace {
+
+struct QuantityInfo {
+  Quantity quantity;
+  std::string_view name, help;
+};
+
+constexpr QuantityInfo kQuantities[] = {
+    {Quantity::u_T, "u_T", "u at the last grid time (T when h divides T)"},
+    {Quantity::v_T, "v_T", "v at the last grid time"},
+    {Quantity::E_T, "E_T", "energy v^2/2 - f u (3-1) at the last grid time"},
+    {Quantity::contact_steps, "contact_steps",
+     "steps with N^l > u^{l+1} - phi: (4-3)'s force branch"},
+    {Quantity::impacts, "impacts", "contact episodes before rest (all of them without rest)"},
+    {Quantity::first_impact_time, "first_impact_time",
+     "t_l + (u^l - phi)/|v^l| for the first contact step l; nan without one"},
+    {Quantity::rest_time, "rest_time",
+     "t_{l+1} for the first step l of a final contact episode of >= 3 steps; nan without rest"},
+    {Quantity::max_u, "max_u", "largest u^l, t = 0 included"},
+    {Quantity::iterations, "iterations", "Newton iterations (fb_newton) or ODE steps (penalty)"},
+    {Quantity::wall_s, "wall_s",
+     "wall time of the point (a share of its group's in the ensemble); not in the default"},
+    {Quantity::err_u_sup, "err_u_sup", "max_l |u^l - u(t_l)|, with --against exact"},
+    {Quantity::err_v_l1, "err_v_l1", "h sum_l |v^l - v(t_l)|, with --against exact"},
+    {Quantity::err_E_T, "err_E_T", "|E^n - E(T)|, with --against exact"},
+    {Quantity::err_first_impact, "err_first_impact",
+     "first impact time (first step with N^l > 0) minus the exact one, with --against exact"},
+};
+
+bool is_error_measure(Quantity q) {
+  return q >= Quantity::err_u_sup;
+}
+
+char* put(char* p, char* end, double x) {
+  return format_double(p, end, x);
+}
+
+char* put(char* p, char* end, std::int64_t x) {
+  return std::to_chars(p, end, x).ptr;
+}
+
+// Longest field: a double in round-trip precision, "-1.2345678901234567e-308".
+constexpr std::size_t kFieldChars = 32;
+
+char* put_quantity(char* p, char* end, Quantity q, const PointOutcome& o, double wall_s) {
+  const PointSummary& s = o.summary;
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  switch (q) {
+    case Quantity::u_T:
+      return put(p, end, s.final.u);
+    case Quantity::v_T:
+      return put(p, end, s.final.v);
+    case Quantity::E_T:
+      return put(p, end, s.energy_final);
+    case Quantity::contact_steps:
+      return put(p, end, s.contact_steps);
+    case Quantity::impacts:
+      return put(p, end, s.impacts);
+    case Quantity::first_impact_time:
+      return put(p, end, s.first_impact_time);
+    case Quantity::rest_time:
+      return put(p, end, s.rest_time.value_or(kNaN));
+    case Quantity::max_u:
+      return put(p, end, s.max_u);
+    case Quantity::iterations:
+      return put(p, end, s.iterations);
+    case Quantity::wall_s:
+      return put(p, end, wall_s);
+    case Quantity::err_u_sup:
+      return put(p, end, o.errors->sup_u);
+    case Quantity::err_v_l1:
+      return put(p, end, o.errors->l1_v);
+    case Quantity::err_E_T:
+      return put(p, end, o.errors->energy_end);
+    case Quantity::err_first_impact:
+      return put(p, end, o.errors->first_impact);
+  }
+  return p;
+}
+
+}  // namespace
+
+std::string quantities_help() {
+  std::string text;
+  for (const auto& q : kQuantities)
+    text += "  " + std::string(q.name) + std::string(19 - q.name.size(), ' ') +
+            std::string(q.help) + "\n";
+  return text;
+}
+
+std::string_view quantity_name(Quantity q) {
+  return kQuantities[static_cast<int>(q)].name;
+}
+
+std::vector<Quantity> parse_summary(const std::string& list, bool against_exact) {
+  std::vector<Quantity> quantities;
+  if (list.empty()) {
+    for (const auto& q : kQuantities)
+      if (q.quantity != Quantity::wall_s && (against_exact || !is_error_measure(q.quantity)))
+        quantities.push_back(q.quantity);
+    return quantities;
+  }
+  std::vector<std::string_view> names;
+  for (const auto& q : kQuantities) names.push_back(q.name);
+  for (std::size_t start = 0; start <= list.size();) {
+    const std::size_t comma = std::min(list.find(',', start), list.size());
+    const std::string name = list.substr(start, comma - start);
+    start = comma + 1;
+    const auto it = std::find(names.begin(), names.end(), name);
+    if (it == names.end()) {
+      std::string allowed;
+      for (auto n : names) allowed += (allowed.empty() ? "" : ", ") + std::string(n);
+      throw SceneError("--summary " + list + ": unknown quantity '" + name +
+                       "' (allowed: " + allowed + ")");
+    }
+    const Quantity q = kQuantities[it - names.begin()].quantity;
+    if (std::find(quantities.begin(), quantities.end(), q) != quantities.end())
+      throw SceneError("--summary " + list + ": '" + name + "' is listed twice");
+    if (is_error_measure(q) && !against_exact)
+      throw SceneError("--summary " + list + ": '" + name + "' needs --against exact");
+    quantities.push_back(q);
+  }
+  return quantities;
+}
+
+std::string csv_header(const SweepGrid& grid, const std::vector<Quantity>& quantities) {
+  std::string header;
+  for (const SweepAxis& axis : grid.axes()) header += axis.key() + ",";
+  for (Quantity q : quantities) header += std::string(quantity_name(q)) + ",";
+  return header + "failure\n";
+}
+
+RowWriter::RowWriter(const SweepGrid& grid, const std::vector<Quantity>& quantities)
+    : grid_(grid),
+      quantities_(quantities),
+      index_(grid.axes().size(), -1),
+      text_(grid.axes().size()) {}
+
+void RowWriter::append(std::string& out, std::int64_t i, const PointResult& result) {
+  for (std::size_t k = 0; k < text_.size(); ++k) {
+    const std::int64_t j = grid_.index(i, k);
+    if (j != index_[k]) {
+      index_[k] = j;
+      text_[k] = grid_.axes()[k].text(j);
+    }
+    out += text_[k];
+    out += ',';
+  }
+  const std::size_t start = out.size();
+  out.resize(start + quantities_.size() * (kFieldChars + 1));
+  char* const begin = out.data() + start;
+  char* const end = out.data() + out.size();
+  char* p = begin;
+  for (Quantity q : quantities_) {
+    if (result.outcome) p = put_quantity(p, end, q, *result.outcome, result.wall_s);
+    *p++ = ',';
+  }
+  out.resize(start + static_cast<std::size_t>(p - begin));
+  if (!result.outcome) {
+    // A message is one line; quotes double, as CSV escapes them.
+    out += '"';
+    for (char c : result.failure) {
+      if (c == '"') out += '"';
+      out += c == '\n' ? ' ' : c;
+    }
+    out += '"';
+  }
+  out += '\n';
+}
+
+std::string part_line(std::int64_t k, std::int64_t n, std::int64_t points,
+                      const std::string& fingerprint) {
+  return "# impact sweep part " + std::to_string(k) + "/" + std::to_string(n) + " of " +
+         std::to_string(points) + " points, sweep " + fingerprint + "\n";
+}
+
+std::optional<PartLine> parse_part_line(const std::string& line) {
+  PartLine p;
+  char fingerprint[17] = {};
+  int used = 0;
+  if (std::sscanf(line.c_str(),
+                  "# impact sweep part %" SCNd64 "/%" SCNd64 " of %" SCNd64
+                  " points, sweep %16[0-9a-f]%n",
+                  &p.k, &p.n, &p.points, fingerprint, &used) != 4 ||
+      static_cast<std::size_t>(used) != line.size() || p.n < 1 || p.k < 1 || p.k > p.n ||
+      p.points < 0)
+    return std::nullopt;
+  p.fingerprint = fingerprint;
+  return p;
+}
+
+std::string sweep_fingerprint(const std::string& scene_text, const std::vector<std::string>& sets,
+                              const std::vector<std::string>& varies,
+                              const std::vector<Quantity>& quantities, bool against_exact) {
+  std::uint64_t hash = 14695981039346656037ull;
+  const auto add = [&](std::string_view text) {
+    // Each field ends with a byte no field contains, so that "ab","c" and "a","bc" differ.
+    for (unsigned char c : text) hash = (hash ^ c) * 1099511628211ull;
+    hash = (hash ^ 0xffu) * 1099511628211ull;
+  };
+  add(scene_text);
+  for (const auto& s : sets) add(s);
+  add("--vary");
+  for (const auto& v : varies) add(v);
+  add("--summary");
+  for (Quantity q : quantities) add(quantity_name(q));
+  add(against_exact ? "exact" : "");
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016" PRIx64, hash);
+  return hex;
+}
+
+}  // namespace impact::cli

@@ -1,0 +1,294 @@
+#include "cli/sweep_runner.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <chrono>
+#include <condition_variable>
+#include <cstdio>
+#include <exception>
+#include <mutex>
+#include <optional>
+#include <thread>
+#include <tuple>
+
+#include "impact/summary.hpp"
+
+namespace impact::cli {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Points per chunk, the unit a thread takes: 192 fills the ensemble's padding (ensemble.cpp)
+// exactly.
+constexpr std::int64_t kChunkPoints = 192;
+// The fewest points on one grid that are stepped together: the ensemble steps 192 lanes at once,
+// so fewer points would waste most of them (an AVX2 lane-step costs about a third of a scalar
+// step, experiments/performance/README.md).
+constexpr std::int64_t kMinEnsemble = 64;
+
+// Runs the chunks of a sweep: chunk c is the shard's points c * chunk ... c * chunk + chunk - 1.
+class Runner {
+ public:
+  Runner(const SweepGrid& grid, const std::vector<Quantity>& quantities, bool against_exact,
+         Shard shard, const std::string& instruction_set)
+      : grid_(grid),
+        quantities_(quantities),
+        against_(against_exact),
+        shard_(shard),
+        instruction_set_(instruction_set) {
+    points_ = shard_points(grid, shard);
+    // Points on one grid must be close in the order to share a chunk: a sweep whose grid changes
+    // every few points runs point by point, in chunks small enough for every thread to get some.
+    const bool together = !against_exact && ensemble_kind(grid.base()) &&
+                          grid.shared_grid_run() / shard.n >= kMinEnsemble;
+    chunk_ = together ? kChunkPoints : std::clamp<std::int64_t>(points_ / 16, 1, kChunkPoints);
+    timed_ = std::find(quantities.begin(), quantities.end(), Quantity::wall_s) != quantities.end();
+  }
+
+  std::int64_t points() const { return points_; }
+  std::int64_t chunks() const { return (points_ + chunk_ - 1) / chunk_; }
+  std::int64_t chunk_size(std::int64_t c) const { return std::min(chunk_, points_ - c * chunk_); }
+
+  struct Output {
+    std::string text;
+    std::int64_t failed = 0;
+  };
+
+  Output run_chunk(std::int64_t c) const {
+    const std::int64_t first = c * chunk_, count = chunk_size(c);
+    std::vector<PointResult> results(static_cast<std::size_t>(count));
+    std::vector<Candidate> candidates;
+    Scene scene = grid_.base();
+    for (std::int64_t p = 0; p < count; ++p) {
+      grid_.apply(point(first + p), scene);
+      const auto kind = against_ ? std::nullopt : ensemble_kind(scene);
+      if (kind)
+        candidates.push_back({p, *kind, scene.grid, scene.model, scene.initial});
+      else
+        run_alone(scene, results[static_cast<std::size_t>(p)]);
+    }
+    run_together(first, candidates, results);
+    Output out;
+    RowWriter rows(grid_, quantities_);
+    for (std::int64_t p = 0; p < count; ++p) {
+      const PointResult& r = results[static_cast<std::size_t>(p)];
+      out.failed += !r.outcome;
+      rows.append(out.text, point(first + p), r);
+    }
+    return out;
+  }
+
+ private:
+  // A point the ensemble can step, and what decides which others it can be stepped with.
+  struct Candidate {
+    std::int64_t position;
+    EnsembleKind kind;
+    Grid grid;
+    Model model;
+    State initial;
+    auto key() const {
+      return std::tuple(kind.method, std::bit_cast<std::uint64_t>(kind.theta),
+                        std::bit_cast<std::uint64_t>(grid.h), grid.steps);
+    }
+  };
+
+  std::int64_t point(std::int64_t position) const { return shard_.k + position * shard_.n; }
+
+  void run_alone(const Scene& scene, PointResult& result) const {
+    const auto start = timed_ ? Clock::now() : Clock::time_point();
+    try {
+      result.outcome = summarize(scene, against_);
+    } catch (const NumericalError& e) {
+      result.failure = e.what();
+    }
+    if (timed_) result.wall_s = seconds_since(start);
+  }
+
+  // Groups the candidates by grid and method; a group of at least kMinEnsemble points is stepped
+  // together (bit-identical to one by one, summary.hpp), the others alone.
+  void run_together(std::int64_t first, std::vector<Candidate>& candidates,
+                    std::vector<PointResult>& results) const {
+    std::stable_sort(candidates.begin(), candidates.end(),
+                     [](const Candidate& a, const Candidate& b) { return a.key() < b.key(); });
+    Scene scene = grid_.base();
+    std::vector<Model> models;
+    std::vector<State> initial;
+    std::vector<std::optional<PointSummary>> summaries;
+    for (auto begin = candidates.begin(); begin != candidates.end();) {
+      const auto end = std::find_if(begin, candidates.end(),
+                                    [&](const Candidate& c) { return c.key() != begin->key(); });
+      if (end - begin < kMinEnsemble) {
+        for (auto c = begin; c != end; ++c) {
+          grid_.apply(point(first + c->position), scene);
+          run_alone(scene, results[static_cast<std::size_t>(c->position)]);
+        }
+        begin = end;
+        continue;
+      }
+      models.clear();
+      initial.clear();
+      for (auto c = begin; c != end; ++c) {
+        models.push_back(c->model);
+        initial.push_back(c->initial);
+      }
+      summaries.assign(models.size(), std::nullopt);
+      const auto start = timed_ ? Clock::now() : Clock::time_point();
+      summarize_together(begin->kind, begin->grid, models, initial, summaries, instruction_set_);
+      const double share = timed_ ? seconds_since(start) / static_cast<double>(models.size()) : 0;
+      for (auto c = begin; c != end; ++c) {
+        PointResult& r = results[static_cast<std::size_t>(c->position)];
+        if (auto& s = summaries[static_cast<std::size_t>(c - begin)]) {
+          r.outcome = PointOutcome{*s, std::nullopt};
+          r.wall_s = share;
+        } else {
+          // A step was not finite: simulate() stops there and says why.
+          grid_.apply(point(first + c->position), scene);
+          run_alone(scene, r);
+        }
+      }
+      begin = end;
+    }
+  }
+
+  const SweepGrid& grid_;
+  const std::vector<Quantity>& quantities_;
+  bool against_;
+  Shard shard_;
+  const std::string& instruction_set_;
+  std::int64_t points_ = 0, chunk_ = 1;
+  bool timed_ = false;
+};
+
+// "impact sweep: 42% of 1000000 points, 81234 points/s, 5 s, about 7 s left", redrawn in place
+// on a terminal, as `impact run` shows its steps: nothing for the first 2 s, then twice a second.
+class SweepProgress {
+ public:
+  SweepProgress(bool enabled, std::int64_t points, Clock::time_point start)
+      : enabled_(enabled), points_(points), start_(start) {}
+  ~SweepProgress() { finish(); }
+  SweepProgress(const SweepProgress&) = delete;
+  SweepProgress& operator=(const SweepProgress&) = delete;
+
+  void update(std::int64_t done) {
+    const double elapsed = seconds_since(start_);
+    if (!enabled_ || done == 0 || elapsed < 2.0 || elapsed < shown_ + 0.5) return;
+    shown_ = elapsed;
+    const double rate = static_cast<double>(done) / elapsed;
+    std::fprintf(stderr,
+                 "\rimpact sweep: %3.0f%% of %lld points, %.0f points/s, %.0f s, about %.0f s "
+                 "left\x1b[K",
+                 100.0 * static_cast<double>(done) / static_cast<double>(points_),
+                 static_cast<long long>(points_), rate, elapsed,
+                 static_cast<double>(points_ - done) / rate);
+    drawn_ = true;
+  }
+  void finish() {
+    if (drawn_) std::fputs("\r\x1b[K", stderr);
+    drawn_ = false;
+  }
+
+ private:
+  bool enabled_;
+  std::int64_t points_;
+  Clock::time_point start_;
+  double shown_ = 0;
+  bool drawn_ = false;
+};
+
+// At most 4 chunks per thread wait to be written (flat memory).
+std::int64_t run_chunks(const Runner& runner, int threads, AtomicFile& file,
+                        SweepProgress& progress) {
+  const std::int64_t chunks = runner.chunks(), window = 4 * static_cast<std::int64_t>(threads);
+  std::vector<Runner::Output> slots(static_cast<std::size_t>(window));
+  std::vector<char> ready(static_cast<std::size_t>(window), 0);
+  std::mutex mutex;
+  std::condition_variable changed;
+  std::int64_t next = 0, written = 0;
+  bool stop = false;
+  std::exception_ptr error;
+  const auto work = [&] {
+    for (;;) {
+      std::int64_t c;
+      {
+        std::unique_lock lock(mutex);
+        changed.wait(lock, [&] { return stop || next >= chunks || next < written + window; });
+        if (stop || next >= chunks) return;
+        c = next++;
+      }
+      try {
+        Runner::Output out = runner.run_chunk(c);
+        std::lock_guard lock(mutex);
+        slots[static_cast<std::size_t>(c % window)] = std::move(out);
+        ready[static_cast<std::size_t>(c % window)] = 1;
+      } catch (...) {
+        std::lock_guard lock(mutex);
+        if (!error) error = std::current_exception();
+        stop = true;
+      }
+      changed.notify_all();
+    }
+  };
+  std::vector<std::jthread> pool;
+  // Whatever leaves this function (a write error too) stops the threads before they are joined.
+  struct Stop {
+    std::mutex& mutex;
+    std::condition_variable& changed;
+    bool& stop;
+    ~Stop() {
+      {
+        std::lock_guard lock(mutex);
+        stop = true;
+      }
+      changed.notify_all();
+    }
+  };
+  for (int t = 0; t < threads; ++t) pool.emplace_back(work);
+  const Stop stopper{mutex, changed, stop};
+  std::int64_t failed = 0, done = 0;
+  for (std::int64_t c = 0; c < chunks; ++c) {
+    Runner::Output out;
+    {
+      std::unique_lock lock(mutex);
+      const std::size_t slot = static_cast<std::size_t>(c % window);
+      while (!stop && !ready[slot])
+        if (changed.wait_for(lock, std::chrono::milliseconds(500)) == std::cv_status::timeout) {
+          lock.unlock();
+          progress.update(done);
+          lock.lock();
+        }
+      if (stop) break;
+      out = std::move(slots[slot]);
+      ready[slot] = 0;
+      written = c + 1;
+    }
+    changed.notify_all();
+    std::fwrite(out.text.data(), 1, out.text.size(), file.stream());
+    file.check();  // a full disk stops the sweep here
+    failed += out.failed;
+    done += runner.chunk_size(c);
+    progress.update(done);
+  }
+  if (error) std::rethrow_exception(error);
+  return failed;
+}
+
+}  // namespace
+
+std::int64_t shard_points(const SweepGrid& grid, const Shard& shard) {
+  return grid.size() > shard.k ? (grid.size() - shard.k + shard.n - 1) / shard.n : 0;
+}
+
+SweepRun run_points(const SweepGrid& grid, const std::vector<Quantity>& quantities,
+                    bool against_exact, const Shard& shard, int threads,
+                    const std::string& instruction_set, AtomicFile& file, bool progress) {
+  const Runner runner(grid, quantities, against_exact, shard, instruction_set);
+  SweepProgress shown(progress, runner.points(), Clock::now());
+  const std::int64_t failed = run_chunks(runner, threads, file, shown);
+  return {runner.points(), failed};
+}
+
+}  // namespace impact::cli

@@ -1,0 +1,35 @@
+// The engine of `impact sweep`: a shard's points cut into chunks, run on a pool of threads (the
+// ensemble where the method allows it, point by point otherwise) and written in order.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "cli/sweep_csv.hpp"
+#include "impact/output.hpp"
+#include "scene/sweep_grid.hpp"
+
+namespace impact::cli {
+
+// The points one process runs: shard k of n (0-based k) holds points k, k + n, k + 2n, ...
+struct Shard {
+  std::int64_t k = 0, n = 1;
+  bool given = false;  // --shard was given: the output is a part, for --merge
+};
+
+std::int64_t shard_points(const SweepGrid& grid, const Shard& shard);
+
+struct SweepRun {
+  std::int64_t points = 0, failed = 0;
+};
+
+// Runs the shard's points on `threads` threads and appends their rows to `file` in the order of
+// the points, so that the bytes do not depend on the number of threads. With `progress`, a line on
+// standard error shows the points done, the rate and the time left.
+// `instruction_set` is the ensemble's vector code (empty: the widest this processor has).
+SweepRun run_points(const SweepGrid& grid, const std::vector<Quantity>& quantities,
+                    bool against_exact, const Shard& shard, int threads,
+                    const std::string& instruction_set, AtomicFile& file, bool progress);
+
+}  // namespace impact::cli

@@ -1,0 +1,67 @@
+#include "impact/summary.hpp"
+
+#include <stdexcept>
+
+namespace impact {
+
+PointSummary finish_summary(const SummaryLanes<double>& lanes, const Model& model, const Grid& grid,
+                            const State& final, std::int64_t iterations) {
+  PointSummary p;
+  p.final = final;
+  p.energy_final = energy(model, final);
+  p.contact_steps = static_cast<std::int64_t>(lanes.contacts.steps);
+  p.impacts = impacts(lanes.contacts);
+  if (lanes.contacts.episodes > 0) {
+    const std::int64_t l = static_cast<std::int64_t>(lanes.first_l);
+    p.first_impact_time = grid.t(l) + floor_crossing(model, {lanes.first_u, lanes.first_v});
+  }
+  p.rest_time = rest_time(lanes.contacts, grid);
+  p.max_u = lanes.max_u;
+  p.iterations = iterations;
+  return p;
+}
+
+PointOutcome summarize(const Scene& scene, bool against_exact) {
+  AnyStepper stepper = make_stepper(scene);
+  SummaryObserver summary(scene.model, scene.grid);
+  if (!against_exact) {
+    const RunSummary run = simulate(stepper, scene.initial, scene.grid, summary);
+    return {summary.result(run), std::nullopt};
+  }
+  ErrorObserver errors(scene.model, scene.initial, scene.grid);
+  const RunSummary run = simulate(stepper, scene.initial, scene.grid,
+                                  [&](std::int64_t l, const State& s, const StepInfo& info) {
+                                    summary(l, s, info);
+                                    errors(l, s, info);
+                                  });
+  return {summary.result(run), errors.result(run)};
+}
+
+std::optional<EnsembleKind> ensemble_kind(const Scene& scene) {
+  if (const auto* direct = std::get_if<DirectParams>(&scene.method))
+    if (direct->free_flight == FreeFlightForm::closed_form)
+      return EnsembleKind{EnsembleMethod::direct, 0.5};
+  if (const auto* mj = std::get_if<MoreauJeanParams>(&scene.method))
+    return EnsembleKind{EnsembleMethod::moreau_jean, mj->theta};
+  return std::nullopt;
+}
+
+void summarize_together(const EnsembleKind& kind, const Grid& grid, std::span<const Model> models,
+                        std::span<const State> initial, std::span<std::optional<PointSummary>> out,
+                        std::string_view instruction_set) {
+  if (out.size() != models.size())
+    throw std::invalid_argument("summarize_together: as many outputs as models are needed");
+  Ensemble ensemble(kind.method, models, initial, grid.h, kind.theta);
+  if (!instruction_set.empty()) ensemble.use(instruction_set);
+  ensemble.keep_summary();
+  ensemble.advance(grid.steps);
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const auto index = static_cast<Eigen::Index>(i);
+    if (ensemble.failed(index))
+      out[i].reset();
+    else
+      out[i] = finish_summary(ensemble.summary(index), models[i], grid, ensemble.state(index), 0);
+  }
+}
+
+}  // namespace impact

@@ -1,0 +1,90 @@
+// The summary of one run in O(1) memory, for parameter sweeps (`impact sweep`): no trajectory is
+// stored. Contact steps, episodes and rest follow the one rule of contact.hpp; the errors against
+// the exact solution are those of error_norms.hpp, from the same run.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <span>
+#include <string_view>
+
+#include "impact/ensemble.hpp"
+#include "impact/error_norms.hpp"
+#include "impact/model.hpp"
+#include "impact/run.hpp"
+#include "impact/scene.hpp"
+#include "impact/summary_lanes.hpp"
+
+namespace impact {
+
+struct PointSummary {
+  State final;              // u^n, v^n at T
+  double energy_final = 0;  // E^n (3-1)
+  std::int64_t contact_steps = 0;
+  std::int64_t impacts = 0;  // contact episodes before rest (all of them without rest)
+  // t_l + floor_crossing(u^l, v^l) for the first contact step l; NaN without contact.
+  double first_impact_time = std::numeric_limits<double>::quiet_NaN();
+  std::optional<double> rest_time;  // rest_time() of contact.hpp
+  double max_u = 0;                 // max over l of u^l
+  std::int64_t iterations = 0;      // Newton iterations or ODE steps (RunSummary)
+};
+
+PointSummary finish_summary(const SummaryLanes<double>& lanes, const Model& model, const Grid& grid,
+                            const State& final, std::int64_t iterations);
+
+// An observer for simulate() that builds the PointSummary as the run streams.
+class SummaryObserver {
+ public:
+  static constexpr bool kStepsLocally = true;  // simulate() keeps the running values in registers
+
+  SummaryObserver(const Model& model, const Grid& grid) : model_(model), grid_(grid) {}
+
+  void operator()(std::int64_t l, const State& s, const StepInfo& info) {
+    if (l == 0)
+      start_summary(lanes_, s.u);
+    else
+      summary_step(lanes_, static_cast<double>(l - 1), model_.phi, previous_.u, previous_.v, s.u,
+                   info.contact_force);
+    previous_ = s;
+  }
+
+  PointSummary result(const RunSummary& run) const {
+    return finish_summary(lanes_, model_, grid_, previous_, run.iterations);
+  }
+
+ private:
+  Model model_;
+  Grid grid_;
+  SummaryLanes<double> lanes_;
+  State previous_;
+};
+
+struct PointOutcome {
+  PointSummary summary;
+  std::optional<ErrorNorms> errors;  // with against_exact
+};
+
+// Runs the scene's method through simulate(), as `impact run` does, with a SummaryObserver (and an
+// ErrorObserver against the exact solution when against_exact). Throws NumericalError as
+// simulate() does.
+PointOutcome summarize(const Scene& scene, bool against_exact);
+
+// The ensemble kernel that steps the scene's method bit-identically, if there is one: direct with
+// its closed-form free flight, and moreau_jean.
+struct EnsembleKind {
+  EnsembleMethod method;
+  double theta;  // moreau_jean's; 0.5 (unused) for direct
+};
+std::optional<EnsembleKind> ensemble_kind(const Scene& scene);
+
+// Many points on one grid with one ensemble method, stepped together; out[i] is the summary of
+// point i, bit-identical to summarize() of its scene, or nullopt where a step gave a non-finite
+// value (summarize() then names the step and the reason).
+// `instruction_set` picks the ensemble's vector code (Ensemble::use; all give the same bits), empty
+// for the widest this processor has.
+void summarize_together(const EnsembleKind& kind, const Grid& grid, std::span<const Model> models,
+                        std::span<const State> initial, std::span<std::optional<PointSummary>> out,
+                        std::string_view instruction_set = {});
+
+}  // namespace impact

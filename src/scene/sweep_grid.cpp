@@ -1,0 +1,291 @@
+#include "scene/sweep_grid.hpp"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <charconv>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+
+#include "impact/output.hpp"
+#include "scene/read_scene.hpp"
+#include "scene/toml_text.hpp"
+
+namespace impact {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// A finite decimal number, the whole of `text` (a leading + allowed).
+std::optional<double> parse_number(std::string_view text) {
+  if (!text.empty() && text.front() == '+') text.remove_prefix(1);
+  double x;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), x);
+  if (text.empty() || error != std::errc() || end != text.data() + text.size() || !std::isfinite(x))
+    return std::nullopt;
+  return x;
+}
+
+std::vector<std::string_view> split(std::string_view text, char separator) {
+  std::vector<std::string_view> parts;
+  for (std::size_t start = 0;;) {
+    const std::size_t end = text.find(separator, start);
+    parts.push_back(text.substr(start, end - start));
+    if (end == std::string_view::npos) return parts;
+    start = end + 1;
+  }
+}
+
+}  // namespace
+
+SweepAxis::SweepAxis(const std::string& vary) {
+  const auto fail = [&](const std::string& why) {
+    throw SceneError("--vary " + vary + ": " + why +
+                     " (SPEC: a:b:n, a:b:n:log or v1,v2,..., e.g. time.h=1e-4:1e-2:41:log)");
+  };
+  const std::size_t eq = vary.find('=');
+  if (eq == std::string::npos || eq == 0) fail("expected table.key=SPEC");
+  key_ = vary.substr(0, eq);
+  const std::string_view spec = std::string_view(vary).substr(eq + 1);
+  const auto number = [&](std::string_view text) {
+    const auto x = parse_number(text);
+    if (!x) fail("'" + std::string(text) + "' is not a finite number");
+    return *x;
+  };
+  if (spec.find(':') == std::string_view::npos) {
+    for (std::string_view item : split(spec, ',')) list_.push_back(number(item));
+    size_ = static_cast<std::int64_t>(list_.size());
+    return;
+  }
+  const auto parts = split(spec, ':');
+  if (parts.size() != 3 && !(parts.size() == 4 && parts[3] == "log"))
+    fail("a range is a:b:n or a:b:n:log");
+  a_ = number(parts[0]);
+  b_ = number(parts[1]);
+  log_ = parts.size() == 4;
+  const auto [end, error] =
+      std::from_chars(parts[2].data(), parts[2].data() + parts[2].size(), size_);
+  if (error != std::errc() || end != parts[2].data() + parts[2].size() || size_ < 1)
+    fail("n = '" + std::string(parts[2]) + "' is not a whole number >= 1");
+  if (size_ == 1 && a_ != b_) fail("n = 1 value cannot include both ends a != b");
+  if (log_ && !(a_ > 0 && b_ > 0)) fail("a logarithmic range needs a > 0 and b > 0");
+}
+
+double SweepAxis::value(std::int64_t j) const {
+  double x;
+  if (!list_.empty()) {
+    x = list_[static_cast<std::size_t>(j)];
+  } else if (j == 0 || j == size_ - 1) {
+    x = j == 0 ? a_ : b_;  // both ends exactly as given
+  } else {
+    // std::lerp is exact at its ends and monotonic, so the values stay between a and b.
+    const double t = static_cast<double>(j) / static_cast<double>(size_ - 1);
+    x = log_ ? std::pow(10.0, std::lerp(std::log10(a_), std::log10(b_), t)) : std::lerp(a_, b_, t);
+  }
+  // round_trip(-0.0) is "-0", which TOML reads as the integer 0.
+  return x == 0 ? 0.0 : x;
+}
+
+std::string SweepAxis::text(std::int64_t j) const {
+  return round_trip(value(j));
+}
+
+std::int64_t SweepAxis::smallest() const {
+  if (list_.empty()) return a_ <= b_ ? 0 : size_ - 1;
+  return std::min_element(list_.begin(), list_.end()) - list_.begin();
+}
+
+std::int64_t SweepAxis::largest() const {
+  if (list_.empty()) return a_ <= b_ ? size_ - 1 : 0;
+  return std::max_element(list_.begin(), list_.end()) - list_.begin();
+}
+
+// A key --vary accepts: how the scene reader stores its value in a Scene.
+struct SweepGrid::Key {
+  std::string_view name;
+  bool integer;  // read as a TOML integer
+  double (*get)(const Scene&);
+  void (*set)(Scene&, double);
+};
+
+namespace {
+
+// A method key's value, NaN when the scene's method has no such key.
+template <class Params, auto Member>
+double method_key(const Scene& s) {
+  const Params* p = std::get_if<Params>(&s.method);
+  return p ? static_cast<double>(p->*Member) : kNaN;
+}
+// Set only after the scene reader accepted the key for the scene's method.
+template <class Params, auto Member>
+void set_method_key(Scene& s, double x) {
+  using Field = std::remove_reference_t<decltype(std::declval<Params&>().*Member)>;
+  std::get<Params>(s.method).*Member = static_cast<Field>(x);
+}
+template <class Params, auto Member>
+constexpr SweepGrid::Key method_entry(std::string_view name, bool integer = false) {
+  return {name, integer, &method_key<Params, Member>, &set_method_key<Params, Member>};
+}
+
+constexpr SweepGrid::Key kKeys[] = {
+    {"initial.u0", false, [](const Scene& s) { return s.initial.u; },
+     [](Scene& s, double x) { s.initial.u = x; }},
+    {"initial.v0", false, [](const Scene& s) { return s.initial.v; },
+     [](Scene& s, double x) { s.initial.v = x; }},
+    {"floor.phi", false, [](const Scene& s) { return s.model.phi; },
+     [](Scene& s, double x) { s.model.phi = x; }},
+    {"floor.cor", false, [](const Scene& s) { return s.model.cor.value_or(kNaN); },
+     [](Scene& s, double x) { s.model.cor = x; }},
+    {"force.f", false, [](const Scene& s) { return s.model.f; },
+     [](Scene& s, double x) { s.model.f = x; }},
+    {"time.T", false, [](const Scene& s) { return s.T; }, [](Scene& s, double x) { s.T = x; }},
+    {"time.h", false, [](const Scene& s) { return s.grid.h; },
+     [](Scene& s, double x) { s.grid.h = x; }},
+    method_entry<MoreauJeanParams, &MoreauJeanParams::theta>("method.theta"),
+    method_entry<FbNewtonParams, &FbNewtonParams::epsilon>("method.epsilon"),
+    method_entry<FbNewtonParams, &FbNewtonParams::tolerance>("method.tolerance"),
+    method_entry<FbNewtonParams, &FbNewtonParams::max_iterations>("method.max_iterations", true),
+    method_entry<PenaltyParams, &PenaltyParams::stiffness>("method.stiffness"),
+    method_entry<PenaltyParams, &PenaltyParams::rtol>("method.rtol"),
+    method_entry<PenaltyParams, &PenaltyParams::atol>("method.atol"),
+};
+
+constexpr auto kKeyNames = [] {
+  std::array<std::string_view, std::size(kKeys)> names;
+  for (std::size_t i = 0; i < names.size(); ++i) names[i] = kKeys[i].name;
+  return names;
+}();
+
+// Two scenes are the same run: every number a sweep can vary, bit for bit, and the rest.
+bool same_scene(const Scene& a, const Scene& b) {
+  for (const auto& key : kKeys)
+    if (std::bit_cast<std::uint64_t>(key.get(a)) != std::bit_cast<std::uint64_t>(key.get(b)))
+      return false;
+  return a.model.cor.has_value() == b.model.cor.has_value() && a.grid.steps == b.grid.steps &&
+         a.method == b.method && a.output.channels == b.output.channels &&
+         a.output.every == b.output.every;
+}
+
+}  // namespace
+
+std::span<const std::string_view> sweep_keys() {
+  return kKeyNames;
+}
+
+SweepGrid::SweepGrid(const std::string& scene_path, const std::vector<std::string>& overrides,
+                     std::vector<SweepAxis> axes)
+    : path_(scene_path), overrides_(overrides), axes_(std::move(axes)) {
+  for (const SweepAxis& axis : axes_) {
+    const auto key = std::find_if(std::begin(kKeys), std::end(kKeys),
+                                  [&](const Key& k) { return k.name == axis.key(); });
+    if (key == std::end(kKeys))
+      throw SceneError("--vary " + axis.key() + ": not a key a sweep can vary (allowed: " +
+                       join({kKeyNames.begin(), kKeyNames.end()}) + ")");
+    if (std::find(keys_.begin(), keys_.end(), &*key) != keys_.end())
+      throw SceneError("--vary " + axis.key() + ": the key is varied twice");
+    keys_.push_back(&*key);
+    grid_varies_ = grid_varies_ || key->name == "time.T" || key->name == "time.h";
+  }
+  // Strides for "the last axis varies fastest"; at most 2^53 points, so that a point's index and
+  // the count of points done are exact as doubles too.
+  strides_.assign(axes_.size(), 1);
+  for (std::size_t k = axes_.size(); k-- > 0;) {
+    strides_[k] = size_;
+    if (__builtin_mul_overflow(size_, axes_[k].size(), &size_) || size_ > (std::int64_t{1} << 53))
+      throw SceneError("--vary: more than 2^53 points");
+  }
+  try {
+    std::vector<std::string> all = overrides_;
+    for (const std::string& o : this->overrides(0)) all.push_back(o);
+    base_ = load_run(path_, all).scene;
+  } catch (const SceneError& e) {
+    throw SceneError(describe(0) + ": " + e.what());
+  }
+  // The scene reader's checks are of two kinds. Those of one key (a number, finite, in the key's
+  // range, an integer where one is needed) ask the same of every value on an axis whatever the
+  // other keys are; every range a scene reader checks is an interval, so the smallest and the
+  // largest value of an axis pass if and only if every value between them does, except that an
+  // integer key (method.max_iterations) must also be whole: its every value is read. These points
+  // go through the reader (with the other axes at their first values, so that each is a real point
+  // whose failure is a failure of the sweep), and their scenes must equal what apply() builds.
+  // The checks that involve two keys or more (u0 >= phi, h <= T, T/h <= 2^53, a finite initial
+  // energy with channel E) are the only others the reader makes; check_cross_keys() repeats them,
+  // in the reader's order and with its comparisons, on every point's plain values.
+  for (std::size_t k = 0; k < axes_.size(); ++k) {
+    if (keys_[k]->integer)
+      for (std::int64_t j = 1; j < axes_[k].size(); ++j) check_with_reader(j * strides_[k]);
+    else
+      for (std::int64_t j : {axes_[k].smallest(), axes_[k].largest()})
+        if (j != 0) check_with_reader(j * strides_[k]);
+  }
+  Scene scene = base_;
+  for (std::int64_t i = 0; i < size_; ++i) check_cross_keys(i, scene);
+}
+
+std::int64_t SweepGrid::shared_grid_run() const {
+  for (std::size_t k = axes_.size(); k-- > 0;)
+    if (axes_[k].key().starts_with("time.") || axes_[k].key().starts_with("method."))
+      return strides_[k];
+  return size_;
+}
+
+void SweepGrid::set_values(std::int64_t i, Scene& scene) const {
+  for (std::size_t k = 0; k < axes_.size(); ++k) keys_[k]->set(scene, axes_[k].value(index(i, k)));
+}
+
+void SweepGrid::apply(std::int64_t i, Scene& scene) const {
+  set_values(i, scene);
+  if (grid_varies_) scene.grid = Grid::covering(scene.T, scene.grid.h);
+}
+
+std::vector<std::string> SweepGrid::overrides(std::int64_t i) const {
+  std::vector<std::string> sets;
+  for (std::size_t k = 0; k < axes_.size(); ++k)
+    sets.push_back(axes_[k].key() + "=" + axes_[k].text(index(i, k)));
+  return sets;
+}
+
+std::string SweepGrid::describe(std::int64_t i) const {
+  std::string text = "point " + std::to_string(i + 1) + " of " + std::to_string(size_) + " (";
+  const auto sets = overrides(i);
+  for (std::size_t k = 0; k < sets.size(); ++k) text += (k ? ", " : "") + sets[k];
+  return text + ")";
+}
+
+void SweepGrid::check_with_reader(std::int64_t i) const {
+  std::vector<std::string> all = overrides_;
+  for (const std::string& o : overrides(i)) all.push_back(o);
+  Scene read;
+  try {
+    read = load_run(path_, all).scene;
+  } catch (const SceneError& e) {
+    throw SceneError(describe(i) + ": " + e.what());
+  }
+  Scene built = base_;
+  apply(i, built);
+  if (!same_scene(read, built))
+    throw std::logic_error(describe(i) + ": the sweep builds another scene than the reader reads");
+}
+
+void SweepGrid::check_cross_keys(std::int64_t i, Scene& scene) const {
+  set_values(i, scene);
+  const auto fail = [&](const std::string& what) {
+    throw SceneError(describe(i) + ": " + path_ + ": " + what);
+  };
+  const double u0 = scene.initial.u, phi = scene.model.phi, T = scene.T, h = scene.grid.h;
+  if (u0 < phi)
+    fail("initial.u0 = " + show_number(u0) + ": must be >= floor.phi = " + show_number(phi) +
+         " (the particle starts above the floor)");
+  if (h > T) fail("time.h = " + show_number(h) + ": must be <= time.T = " + show_number(T));
+  if (!(T / h <= kMaxGridSteps))
+    fail("time.h = " + show_number(h) + ": T/h = " + show_number(T / h) +
+         " steps is too many to count exactly (at most 2^53 = 9007199254740992)");
+  const auto& channels = scene.output.channels;
+  if (std::find(channels.begin(), channels.end(), Channel::E) != channels.end() &&
+      !std::isfinite(energy(scene.model, scene.initial)))
+    fail("output.channels: E: the initial energy v0^2/2 - f u0 (3-1) is beyond the double range");
+}
+
+}  // namespace impact

@@ -1,0 +1,92 @@
+// The points of a parameter sweep (`impact sweep`): axes from --vary SPECs, their Cartesian
+// product, and the scene of each point built as plain values, without reading TOML again, yet the
+// same Scene, bit for bit, as `impact run SCENE --set key=value ...` reads for that point
+// (overrides()). Values are computed when asked for, so a sweep takes O(axes) memory however many
+// points it has.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "impact/scene.hpp"
+#include "scene/scene_error.hpp"
+
+namespace impact {
+
+// One --vary: "table.key=SPEC" with SPEC `a:b:n` (n values from a to b, evenly spaced, both ends
+// included), `a:b:n:log` (evenly spaced in log10; a, b > 0) or `v1,v2,...` (the numbers given).
+class SweepAxis {
+ public:
+  // Throws SceneError naming the --vary and what is wrong; the key is checked by SweepGrid.
+  explicit SweepAxis(const std::string& vary);
+
+  const std::string& key() const { return key_; }
+  std::int64_t size() const { return size_; }
+  // Value j, as the scene reader reads its text() (a -0 is read as 0, so it is 0 here).
+  double value(std::int64_t j) const;
+  // Value j as the --set text that reads back as it: 17 significant digits (round_trip).
+  std::string text(std::int64_t j) const;
+  // Where the smallest and the largest value are.
+  std::int64_t smallest() const;
+  std::int64_t largest() const;
+
+ private:
+  std::string key_;
+  std::int64_t size_ = 0;
+  double a_ = 0, b_ = 0;
+  bool log_ = false;
+  std::vector<double> list_;  // the values of `v1,v2,...`; empty for a range
+};
+
+// The keys --vary accepts: every number a scene reads (method keys only for their method).
+std::span<const std::string_view> sweep_keys();
+
+class SweepGrid {
+ public:
+  // Reads the scene with `overrides` and point 0's values as `impact run` does, then checks every
+  // point of the product of the axes (the last axis varies fastest) as a scene: throws SceneError
+  // naming the first invalid point, its values, the key and what is allowed (sweep_grid.cpp says
+  // why the checks are complete).
+  SweepGrid(const std::string& scene_path, const std::vector<std::string>& overrides,
+            std::vector<SweepAxis> axes);
+
+  std::int64_t size() const { return size_; }
+  const std::vector<SweepAxis>& axes() const { return axes_; }
+  // Point 0's scene.
+  const Scene& base() const { return base_; }
+
+  // Point i's value index on axis k.
+  std::int64_t index(std::int64_t i, std::size_t k) const {
+    return i / strides_[k] % axes_[k].size();
+  }
+  // How many consecutive points share h, T and the method's keys: the stride of the fastest varied
+  // time.* or method.* key, or every point when none is varied.
+  std::int64_t shared_grid_run() const;
+  // Sets the varied values of `scene`, a copy of base(), to point i's, and its grid.
+  void apply(std::int64_t i, Scene& scene) const;
+  // The --set strings that give point i's scene to `impact run` (after the sweep's own --set).
+  std::vector<std::string> overrides(std::int64_t i) const;
+  // "point 3 of 41 (time.h=0.0001)", for messages.
+  std::string describe(std::int64_t i) const;
+
+  struct Key;
+
+ private:
+  void set_values(std::int64_t i, Scene& scene) const;
+  void check_with_reader(std::int64_t i) const;
+  void check_cross_keys(std::int64_t i, Scene& scene) const;
+
+  std::string path_;
+  std::vector<std::string> overrides_;
+  std::vector<SweepAxis> axes_;
+  std::vector<const Key*> keys_;
+  std::vector<std::int64_t> strides_;
+  std::int64_t size_ = 1;
+  bool grid_varies_ = false;
+  Scene base_;
+};
+
+}  // namespace impact
