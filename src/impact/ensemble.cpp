@@ -5,11 +5,9 @@
 #include <stdexcept>
 #include <string>
 
-// FMA stays off in the vector code: contracting a * b + c into one rounding would make the lanes
-// differ from the single-particle solver, which the baseline x86-64 build never contracts. GCC
-// takes it per function (IMPACT_NO_CONTRACT below). Clang contracts within an expression by
-// default and decides it where the expression is written, so its pragma comes before the
-// kernels' headers.
+// FMA stays off in the vector code: one rounding for a * b + c would make the lanes differ from the
+// single-particle solver, which the baseline x86-64 build never contracts. GCC takes it per function
+// (IMPACT_NO_CONTRACT); clang decides it where the expression is written: its pragma comes first.
 #if defined(__clang__)
 #pragma clang fp contract(off)
 #define IMPACT_NO_CONTRACT
@@ -23,9 +21,8 @@
 namespace impact {
 namespace {
 
-// GCC/Clang vector types: arithmetic and comparisons apply lane by lane, and `mask ? a : b` selects
-// lane by lane, which is what lets direct_step and moreau_jean_step, written for double, run on
-// them unchanged.
+// GCC/Clang vector types: arithmetic, comparisons and `mask ? a : b` apply lane by lane, which lets
+// direct_step and moreau_jean_step, written for double, run on them unchanged.
 template <int Lanes>
 struct LaneTypes {
   typedef double Real __attribute__((vector_size(Lanes * sizeof(double))));
