@@ -400,3 +400,18 @@ TEST_CASE("cli: plot draws a run's CSV with gnuplot, one panel per channel", "[c
   CHECK(dir.run("plot run.csv --out run.gif").code == 2);
   CHECK(dir.run("plot missing.csv").code == 2);
 }
+
+TEST_CASE("cli: a run of more than 1e8 rows asks for output.every or --force before it starts",
+          "[cli]") {
+  TempDir dir;
+  const std::string scene = std::string(IMPACT_SOURCE_DIR) + "/experiments/figure3/no_cor.toml";
+  // h = 1e-8 over T = 10: 1e9 steps, 1e9 + 1 rows of four channels (about 125 GB).
+  Result r = dir.run("run " + scene + " --set time.h=1e-8 -o X.csv");
+  CHECK(r.code == 2);
+  CHECK_THAT(r.err, Contains("1000000001 rows") && Contains("output.every") &&
+                        Contains("--force"));
+  CHECK(dir.entries().empty());  // nothing written, not even a temporary
+  // With every = 1e3 the same run is 1e6 rows: allowed (checked only up to the start: T cut short).
+  r = dir.run("run " + scene + " --set time.h=1e-8 --set time.T=1e-5 -q -o X.csv");
+  CHECK(r.code == 0);
+}

@@ -24,6 +24,8 @@
 namespace {
 
 constexpr int kOk = 0, kNumericalFailure = 1, kBadInput = 2;
+// Beyond these a run asks for output.every or --force before it starts.
+constexpr double kMaxRowsUnasked = 1e8, kMaxBytesUnasked = 4e9;
 
 std::string methods_help() {
   std::string text = "Methods ([method] name = ...):\n";
@@ -91,7 +93,7 @@ bool same_file(const std::string& a, const std::string& b) {
 // `in_place` tells main() whether rows may have gone out before a failure (to standard output, a
 // pipe, a device) or nothing was written (a file that appears only when the run succeeds).
 int run(const std::string& scene_path, const std::vector<std::string>& overrides,
-        const std::string& out_path, bool quiet, bool against_exact, bool& in_place) {
+        const std::string& out_path, bool quiet, bool against_exact, bool force, bool& in_place) {
   using namespace impact;
   const auto start = Clock::now();
   Run loaded = load_run(scene_path, overrides);
@@ -108,6 +110,18 @@ int run(const std::string& scene_path, const std::vector<std::string>& overrides
   if (!to_stdout && same_file(out_path, scene_path))
     throw OutputError(out_path + ": --out names the scene file itself; give another file name",
                       true);
+  // A run that would write more than ~1e8 rows (gigabytes) is most likely a missing output.every.
+  const std::int64_t every_step = scene.output.every, steps = scene.grid.steps;
+  const double rows_due = static_cast<double>(steps / every_step + 1 + (steps % every_step != 0));
+  const double bytes_due = rows_due * 25.0 * static_cast<double>(scene.output.channels.size() + 1);
+  if (!force && (rows_due > kMaxRowsUnasked || bytes_due > kMaxBytesUnasked))
+    throw SceneError(scene_path + ": output.every = " + std::to_string(scene.output.every) +
+                     ": this run would write " + round_trip(rows_due) + " rows (about " +
+                     round_trip(std::round(bytes_due / 1e9)) +
+                     " GB); set output.every (e.g. --set output.every=" +
+                     std::to_string(static_cast<long long>(
+                         std::ceil(static_cast<double>(scene.grid.steps) / 1e6))) +
+                     " for 1e6 rows) or pass --force");
   AtomicFile file(out_path);
   in_place = file.in_place();
   CsvWriter csv(file.stream(), scene.model, scene.output.channels);
@@ -218,6 +232,9 @@ int main(int argc, char** argv) {
                    "of u, the L1 error of v, the final energy error and the first impact time's "
                    "error, with the wall time")
       ->check(CLI::IsMember({"exact"}));
+  bool force = false;
+  run_cmd->add_flag("--force", force,
+                    "Write the rows even when there are more than 1e8 of them (or 4 GB)");
   run_cmd->add_flag("--quiet,-q", quiet,
                     "Do not print the progress and summary lines on standard error");
   run_cmd->footer(
@@ -261,7 +278,7 @@ int main(int argc, char** argv) {
   bool in_place = true;
   try {
     if (sweep_cmd->parsed()) return impact::cli::run_sweep(sweep);
-    return run(scene_path, overrides, out_path, quiet, against == "exact", in_place);
+    return run(scene_path, overrides, out_path, quiet, against == "exact", force, in_place);
   } catch (const impact::SceneError& e) {
     std::fprintf(stderr, "impact: error: %s\n", e.what());
     return kBadInput;
