@@ -10,6 +10,7 @@
 // order as the single-particle solvers and so gets bit-identical results.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 
 #include "impact/model.hpp"
@@ -22,6 +23,14 @@ namespace impact {
 // exact arithmetic; in floating point they differ by rounding, which decides, e.g., when
 // Figure 4's particle comes to rest (paper_notes/figure4.md).
 enum class FreeFlightForm { closed_form, paper };
+
+// The scheme (4-1)-(4-3) solves for N^l with the factor 2/h^2 of (5-1): for h below ~1.5e-154 it
+// overflows, above ~1.3e154 it underflows to 0, and the step's contact force is then inf or 0/0.
+// direct and fb_newton refuse such an h (the scene reader says so before the run).
+inline bool scheme_step_representable(double h) {
+  const double k = 2 / (h * h);
+  return h > 0 && std::isnormal(k);
+}
 
 // One step of (5-1) with N^l = 0 and (4-2) as printed, from (u, v); `u` may be a gap u - phi.
 inline State paper_free_step(const State& s, double f, double h) {

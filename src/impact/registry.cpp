@@ -3,6 +3,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "impact/output.hpp"
+
 namespace impact {
 namespace {
 
@@ -41,6 +43,11 @@ AnyStepper make_stepper(const Model& model, double h, const MethodParams& params
   if (model.cor && !method_info(params).takes_cor)
     throw std::invalid_argument("method '" + std::string(method_name(params)) +
                                 "' has no restitution law: it cannot take a COR");
+  if ((std::holds_alternative<DirectParams>(params) ||
+       std::holds_alternative<FbNewtonParams>(params)) &&
+      !scheme_step_representable(h))
+    throw std::invalid_argument("method '" + std::string(method_name(params)) +
+                                "': 2/h^2 of (5-1) is not representable for h = " + round_trip(h));
   return std::visit(
       [&](const auto& p) -> AnyStepper {
         using Params = std::decay_t<decltype(p)>;
