@@ -95,7 +95,7 @@ class Reader {
 
 void apply_override(toml::table& root, const std::string& assignment, const std::string& source) {
   auto fail = [&](const std::string& why) {
-    throw SceneError(source + ": --set " + assignment + ": " + why);
+    throw SceneError(source + ": --set " + cut(assignment) + ": " + why);
   };
   auto eq = assignment.find('=');
   if (eq == std::string::npos) fail("expected table.key=value");
@@ -115,8 +115,11 @@ void apply_override(toml::table& root, const std::string& assignment, const std:
   if (find_non_ascii_outside_comments(value) != std::string_view::npos)
     fail("the value '" + value + "' has a non-ASCII character (a scene's values are ASCII)");
   // A TOML value (number, boolean, string, array); a bare word is read as a string.
+  const std::string line = "value = " + value;
+  if (const TooDeep deep = find_too_deep(line); deep.at != std::string_view::npos)
+    fail("the value has " + deep.what());
   try {
-    toml::table parsed = toml::parse("value = " + value);
+    toml::table parsed = toml::parse(line);
     // One value, not a value and more TOML after it ("0.01\nT = 5" would set time.T too).
     if (parsed.size() != 1) fail("the value '" + value + "' is not a single TOML value");
     table->insert_or_assign(key, *parsed.get("value"));
@@ -259,20 +262,15 @@ Scene build(const toml::table& root, const std::string& source) {
 // The TOML document, or SceneError with the parser's message and the line and column it names.
 toml::table parse_toml(std::string_view text, const std::string& source) {
   if (const std::size_t at = find_non_ascii_outside_comments(text); at != std::string_view::npos) {
-    // Line and column as toml++ counts them: the column in characters, not bytes.
-    const std::size_t newline = text.rfind('\n', at);
-    const std::size_t line_start = newline == std::string_view::npos ? 0 : newline + 1;
-    const std::size_t line =
-        1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + at, '\n'));
-    std::size_t column = 1;
-    for (std::size_t i = line_start; i < at; ++i)
-      column += (static_cast<unsigned char>(text[i]) & 0xC0) != 0x80;  // not a continuation byte
     char byte[8];
     std::snprintf(byte, sizeof byte, "0x%02x", static_cast<unsigned char>(text[at]));
-    throw SceneError(source + ":" + std::to_string(line) + ":" + std::to_string(column) +
+    throw SceneError(source + ":" + line_and_column(text, at) +
                      ": not a valid scene: non-ASCII byte " + byte +
                      " outside a comment (a scene's keys and values are ASCII)");
   }
+  if (const TooDeep deep = find_too_deep(text); deep.at != std::string_view::npos)
+    throw SceneError(source + ":" + line_and_column(text, deep.at) +
+                     ": not a valid scene: " + deep.what());
   try {
     return toml::parse(text, source);
   } catch (const toml::parse_error& e) {

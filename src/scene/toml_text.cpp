@@ -3,6 +3,7 @@
 #include "scene/toml_text.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cstdio>
 #include <sstream>
@@ -25,19 +26,25 @@ std::string printable(std::string_view key) {
   return out;
 }
 
-// Where the first non-ASCII byte outside a comment is, or npos. toml++ 3.3 classifies a non-ASCII
-// character wherever whitespace may follow (between tokens, in keys and values, after a
-// line-ending backslash) with a lookup that reaches __builtin_unreachable for many code points,
-// e.g. U+00A1..U+0499 (toml++ issues #190 and #295): undefined behaviour in the packaged library,
-// found by tests/fuzz. A scene's keys and values are ASCII anyway, so a scene may use other
-// characters only in comments, where toml++ checks nothing but control characters and surrogates.
-// The states follow TOML's strings (basic with escapes, literal, and their multi-line forms).
-std::size_t find_non_ascii_outside_comments(std::string_view text) {
+// Text as typed (a --set, a parser's description of it), shown with printable() and cut at
+// kShowLimit characters, so that a message stays one readable line whatever was typed. The cut
+// does not split a UTF-8 sequence.
+std::string cut(std::string_view text) {
+  std::string out = printable(text);
+  if (out.size() <= kShowLimit) return out;
+  std::size_t end = kShowLimit;
+  while (end > 0 && (static_cast<unsigned char>(out[end]) & 0xC0) == 0x80) --end;
+  return out.substr(0, end) + "...";
+}
+
+// The lexical states of a TOML text: code, comments, and TOML's strings (basic with escapes,
+// literal, and their multi-line forms). Calls stop(i, part) for each byte in order and returns the
+// first i for which it is true, or npos. The second and third quote that open or close a
+// multi-line string are skipped (they are quotes, and ASCII).
+std::size_t find_in_toml(std::string_view text,
+                         const std::function<bool(std::size_t, TomlPart)>& stop) {
   enum class In { code, comment, basic, literal, multiline_basic, multiline_literal };
   In in = In::code;
-  const auto non_ascii = [&](std::size_t i) {
-    return i < text.size() && static_cast<unsigned char>(text[i]) >= 0x80;
-  };
   const auto quotes_at = [&](std::size_t i, char q) {
     std::size_t n = 0;
     while (i + n < text.size() && text[i + n] == q) ++n;
@@ -45,7 +52,10 @@ std::size_t find_non_ascii_outside_comments(std::string_view text) {
   };
   for (std::size_t i = 0; i < text.size(); ++i) {
     const char c = text[i];
-    if (in != In::comment && non_ascii(i)) return i;
+    if (stop(i, in == In::code      ? TomlPart::code
+                : in == In::comment ? TomlPart::comment
+                                    : TomlPart::string))
+      return i;
     switch (in) {
       case In::code:
         if (c == '#') {
@@ -63,7 +73,7 @@ std::size_t find_non_ascii_outside_comments(std::string_view text) {
       case In::basic:
       case In::multiline_basic:
         if (c == '\\') {  // the escaped character is inside the string too
-          if (non_ascii(i + 1)) return i + 1;
+          if (i + 1 < text.size() && stop(i + 1, TomlPart::string)) return i + 1;
           ++i;
         } else if (c == '\n' && in == In::basic) {
           in = In::code;  // an unterminated string: toml++ reports it
@@ -85,6 +95,82 @@ std::size_t find_non_ascii_outside_comments(std::string_view text) {
     }
   }
   return std::string_view::npos;
+}
+
+// toml++ 3.3 classifies a non-ASCII character wherever whitespace may follow (between tokens, in
+// keys and values, after a line-ending backslash) with a lookup that reaches
+// __builtin_unreachable for many code points, e.g. U+00A1..U+0499 (toml++ issues #190 and #295):
+// undefined behaviour in the packaged library, found by tests/fuzz. A scene's keys and values are
+// ASCII anyway, so a scene may use other characters only in comments, where toml++ checks nothing
+// but control characters and surrogates.
+std::size_t find_non_ascii_outside_comments(std::string_view text) {
+  return find_in_toml(text, [&](std::size_t i, TomlPart part) {
+    return part != TomlPart::comment && static_cast<unsigned char>(text[i]) >= 0x80;
+  });
+}
+
+// toml++ 3.3 makes a table of each part of a dotted key or table name and later walks and frees
+// them recursively, one stack frame per part: 40000 parts overflow 8 MiB of stack, 6000 parts
+// 1 MiB. It stops nested arrays and inline tables at 256, but 256 inline tables with a dotted key
+// in each are thousands of tables again. A scene's keys have two parts (table.key) and its values
+// nest one level (output.channels), so far lower bounds cost nothing and make the parse independent
+// of the stack size. Dots count only where a key can be: not in strings or comments, and not in
+// values (1.5), except in the keys of an inline table.
+TooDeep find_too_deep(std::string_view text) {
+  std::vector<char> open;  // the arrays '[' and inline tables '{' around the current byte
+  bool value = false;      // after '=' or inside an array: not a key
+  std::size_t dots = 0;    // in the dotted key being read
+  TooDeep found;
+  found.at = find_in_toml(text, [&](std::size_t i, TomlPart part) {
+    if (part != TomlPart::code) return false;
+    const char c = text[i];
+    if (std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == ' ' ||
+        c == '\t' || c == '"' || c == '\'')
+      return false;  // inside a key (a quoted part is a string, skipped)
+    if (c == '.') {
+      found.key = true;
+      return !value && ++dots >= kMaxKeyParts;
+    }
+    dots = 0;
+    if (c == '=') {
+      value = true;
+    } else if (c == '\n') {
+      value = value && !open.empty();  // a multi-line array goes on
+    } else if (c == '[' && (value || !open.empty())) {
+      open.push_back('[');  // an array, not a table header
+      value = true;
+    } else if (c == '{') {
+      open.push_back('{');
+      value = false;  // its keys come first
+    } else if ((c == ']' || c == '}') && !open.empty() && open.back() == (c == ']' ? '[' : '{')) {
+      open.pop_back();
+      value = true;  // what closed was a value
+    } else if (c == ',' && !open.empty()) {
+      value = open.back() == '[';  // the next element, or the next key of an inline table
+    }
+    found.key = false;
+    return open.size() > kMaxNesting;
+  });
+  return found;
+}
+
+std::string TooDeep::what() const {
+  return key ? "a dotted key or table name of more than " + std::to_string(kMaxKeyParts) +
+                   " parts (a scene's keys are table.key)"
+             : "arrays and inline tables nested more than " + std::to_string(kMaxNesting) +
+                   " deep (a scene's values are numbers, names and one list of names)";
+}
+
+// "line:column" of byte `at`, as toml++ counts them: the column in characters, not bytes.
+std::string line_and_column(std::string_view text, std::size_t at) {
+  const std::size_t newline = text.rfind('\n', at);
+  const std::size_t line_start = newline == std::string_view::npos ? 0 : newline + 1;
+  const std::size_t line =
+      1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + at, '\n'));
+  std::size_t column = 1;
+  for (std::size_t i = line_start; i < at; ++i)
+    column += (static_cast<unsigned char>(text[i]) & 0xC0) != 0x80;  // not a continuation byte
+  return std::to_string(line) + ":" + std::to_string(column);
 }
 
 // The shortest decimal that reads back as x (1e-15, not toml++'s 1.0000000000000001e-15).
