@@ -252,6 +252,69 @@ TEST_CASE("hardening: a deeply nested key or value exits 2 whatever the stack si
   CHECK_THAT(message("x = " + brackets(9)), Contains("s.toml:1:13: not a valid scene"));
 }
 
+// TOML asks for a valid UTF-8 document, which may start with a byte-order mark; Windows editors
+// write one. It used to be "1:1: non-ASCII byte 0xef".
+TEST_CASE("hardening: a UTF-8 byte-order mark is skipped at the start and named elsewhere",
+          "[hardening]") {
+  TempDir dir;
+  const std::string bom = "\xEF\xBB\xBF";
+  dir.write("plain.toml", kShort);
+  dir.write("bom.toml", bom + kShort);
+  const Result plain = dir.run("run plain.toml -q"), with_bom = dir.run("run bom.toml -q");
+  REQUIRE(plain.code == 0);
+  CHECK(with_bom.code == 0);
+  CHECK(with_bom.err.empty());
+  CHECK(with_bom.out == plain.out);
+  // Columns on line 1 count from after the mark, as an editor shows them.
+  dir.write("bom_error.toml", bom + "[initial\n");
+  CHECK_FAILS_CLEANLY(dir, "run bom_error.toml", 2, Contains("bom_error.toml:1:9:"));
+  dir.write("twice.toml", bom + bom + kShort);
+  CHECK_FAILS_CLEANLY(dir, "run twice.toml", 2,
+                      Contains("twice.toml:1:1: not a valid scene: a UTF-8 byte-order mark") &&
+                          Contains("only at the start of the file"));
+  dir.write("middle.toml", kShort + bom + "[floor]\n");
+  CHECK_FAILS_CLEANLY(dir, "run middle.toml", 2,
+                      Contains("middle.toml:9:1:") && Contains("byte-order mark"));
+}
+
+// A value or key of any length is cut at 200 characters in a message: a 130 000-character --set
+// used to be echoed whole.
+TEST_CASE("hardening: a long value or key is cut in every message", "[hardening]") {
+  TempDir dir;
+  dir.write("s.toml", kShort);
+  const std::string many(130000, '7'), word(130000, 'k');
+  const std::vector<std::string> sets{
+      "time.h=" + many,                  // not representable in 64 bits
+      "time.h=" + many + ".5",           // a float: shown whole by toml++'s description
+      "time.h=1'" + word,                // malformed
+      "time.h=" + word,                  // a bare word: must be a number
+      "time." + word + "=1",             // an unknown key
+      word + ".h=1",                     // an unknown table
+      word + "=1",                       // not table.key
+      "method.name=" + word,             // an unknown method
+      "time.h=\"" + word + "\"\nT = 1",  // more than one value
+      "time.h=[" + word.substr(0, 2000) + "]",
+  };
+  for (const auto& set : sets) {
+    const Result r = dir.run("run s.toml -o X.csv --set " + quote(set));
+    INFO("--set " << set.substr(0, 40) << "...: " << r.err.substr(0, 2000));
+    CHECK(r.code == 2);
+    CHECK(r.err.size() < 1000);
+    CHECK_THAT(r.err, Contains("--set "));
+  }
+  for (const auto& text :
+       {"[initial]\n" + word + " = 1\n", "[" + word + "]\n", "[initial]\nu0 = '" + word + "'\n",
+        "[initial]\nu0 = " + many + "\n", "[initial]\nu0 = " + word + "\n"}) {
+    dir.write("long.toml", text);
+    const Result r = dir.run("run long.toml -o X.csv");
+    INFO(r.err.substr(0, 2000));
+    CHECK(r.code == 2);
+    CHECK(r.err.size() < 1000);
+    CHECK_THAT(r.err, Contains("long.toml"));
+  }
+  CHECK(dir.entries() == std::set<std::string>{"s.toml", "long.toml"});
+}
+
 TEST_CASE("hardening: duplicate keys and tables exit 2", "[hardening]") {
   TempDir dir;
   dir.write("dup_key.toml", "[initial]\nu0 = 1.0\nu0 = 2.0\nv0 = -1.0\n");

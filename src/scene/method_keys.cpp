@@ -16,8 +16,8 @@ namespace {
 // key the method does not read (a typo) is rejected with the list of allowed keys.
 class MethodKeys {
  public:
-  MethodKeys(const toml::table& table, const std::string& source, std::string_view method)
-      : table_(table), source_(source), method_(method) {}
+  MethodKeys(const toml::table& table, const Origins& origins, std::string_view method)
+      : table_(table), origins_(origins), method_(method) {}
 
   // A number in [lo, hi] (open at lo when lo_open), defaulting to `fallback` when absent.
   double number(std::string_view key, double fallback, double lo, double hi, bool lo_open = false) {
@@ -78,12 +78,12 @@ class MethodKeys {
   }
   [[noreturn]] void fail(std::string_view key, const toml::node& node,
                          const std::string& allowed) const {
-    throw SceneError(source_ + ": method." + std::string(key) + " = " + show(node) + ": " +
-                     allowed);
+    throw SceneError(origins_.of("method", key) + ": method." + show_key(key) + " = " + show(node) +
+                     ": " + allowed);
   }
 
   const toml::table& table_;
-  const std::string& source_;
+  const Origins& origins_;
   std::string_view method_;
   std::vector<std::string> read_{"name"};
 };
@@ -131,9 +131,9 @@ Params read(MethodKeys&, Params p) {
 
 }  // namespace
 
-MethodParams read_method_keys(const toml::table& method, const std::string& source,
+MethodParams read_method_keys(const toml::table& method, const Origins& origins,
                               const MethodInfo& info) {
-  MethodKeys keys(method, source, info.name);
+  MethodKeys keys(method, origins, info.name);
   MethodParams params = std::visit(
       [&](const auto& defaults) { return MethodParams(read(keys, defaults)); }, info.defaults);
   keys.reject_unread();

@@ -7,13 +7,14 @@
 #include <string>
 
 #include "impact/registry.hpp"
+#include "scene/overrides.hpp"
 
 namespace impact {
 
 // Reads the keys of `method` (name included) for the method `info`; throws SceneError naming
-// `source`, the key, the value and the allowed range, or the allowed keys for a key the method
-// does not read (a typo).
-MethodParams read_method_keys(const toml::table& method, const std::string& source,
+// where the key came from (`origins`), the key, the value and the allowed range, or the allowed
+// keys for a key the method does not read (a typo).
+MethodParams read_method_keys(const toml::table& method, const Origins& origins,
                               const MethodInfo& info);
 
 }  // namespace impact

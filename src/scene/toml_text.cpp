@@ -179,17 +179,8 @@ std::string show_number(double x) {
   return std::string(buf, std::to_chars(buf, buf + sizeof buf, x).ptr);
 }
 
-// A string value in TOML syntax: 'literal' when it can be, else "basic" with escapes.
-std::string show_string(std::string_view text) {
-  bool literal = true;
-  for (unsigned char c : text) literal = literal && c >= 0x20 && c != 0x7f && c != '\'';
-  if (literal) {
-    // Appended piece by piece: GCC 12 reports a false -Wrestrict for "'" + std::string(text).
-    std::string out(1, '\'');
-    out.append(text);
-    out += '\'';
-    return out;
-  }
+// A TOML basic string: "..." with quotes, backslashes and control characters escaped.
+std::string basic_string(std::string_view text) {
   std::string out = "\"";
   for (unsigned char c : text) {
     if (c == '"' || c == '\\') {
@@ -206,6 +197,38 @@ std::string show_string(std::string_view text) {
   return out + "\"";
 }
 
+// A string value in TOML syntax: 'literal' when it can be, else "basic" with escapes.
+std::string show_string(std::string_view text) {
+  bool literal = true;
+  for (unsigned char c : text) literal = literal && c >= 0x20 && c != 0x7f && c != '\'';
+  if (!literal) return basic_string(text);
+  // Appended piece by piece: GCC 12 reports a false -Wrestrict for "'" + std::string(text).
+  std::string out(1, '\'');
+  out.append(text);
+  out += '\'';
+  return out;
+}
+
+// A key as TOML would need it written: bare when it is a bare key (letters, digits, _ and -),
+// else quoted, so that `"u0 " = 5` shows as initial."u0 " and the space is seen. Cut at
+// kShowLimit characters.
+std::string show_key(std::string_view key) {
+  const bool bare = !key.empty() && std::all_of(key.begin(), key.end(), [](unsigned char c) {
+    return std::isalnum(c) || c == '_' || c == '-';
+  });
+  std::string out = bare ? std::string(key) : basic_string(key);
+  if (out.size() > kShowLimit) out = out.substr(0, kShowLimit) + "...";
+  return out;
+}
+
+// A float as TOML writes it: a whole number keeps its ".0" (1.0, not 1), so that a message about
+// a key that needs an integer shows why the value is not one.
+std::string show_float(double x) {
+  std::string out = show_number(x);
+  if (out.find_first_of(".en") == std::string::npos) out += ".0";  // not 1e+20, nan, inf
+  return out;
+}
+
 // A value as it would be written in TOML, for messages. Written here, not by toml++: its formatter
 // lays out arrays by converting log10 of each number to size_t, which is undefined for nan, inf,
 // |x| < 0.1 and INT64_MIN (found by tests/fuzz), and classifies non-ASCII characters of strings
@@ -213,7 +236,7 @@ std::string show_string(std::string_view text) {
 std::string show(const toml::node& node, int depth) {
   std::string out;
   if (const auto* x = node.as_floating_point()) {
-    out = show_number(x->get());
+    out = show_float(x->get());
   } else if (const auto* i = node.as_integer()) {
     out = std::to_string(i->get());
   } else if (const auto* b = node.as_boolean()) {
@@ -221,18 +244,21 @@ std::string show(const toml::node& node, int depth) {
   } else if (const auto* str = node.as_string()) {
     out = show_string(str->get());
   } else if (const auto* array = node.as_array()) {
-    out = "[";
+    out += '[';  // appended, not assigned: GCC 12 reports a false -Wrestrict for out = "["
     for (const toml::node& item : *array) {
       if (out.size() > kShowLimit) break;
-      out += (out.size() > 1 ? ", " : "") + (depth < 8 ? show(item, depth + 1) : "...");
+      if (out.size() > 1) out += ", ";
+      out += depth < 8 ? show(item, depth + 1) : "...";
     }
     out += "]";
   } else if (const auto* table = node.as_table()) {
-    out = "{";
+    out += '{';
     for (auto&& [key, value] : *table) {
       if (out.size() > kShowLimit) break;
-      out += (out.size() > 1 ? ", " : "") + printable(key.str()) + " = " +
-             (depth < 8 ? show(value, depth + 1) : "...");
+      if (out.size() > 1) out += ", ";
+      out += show_key(key.str());
+      out += " = ";
+      out += depth < 8 ? show(value, depth + 1) : "...";
     }
     out += "}";
   } else {  // a date, time or date-time: digits and separators only

@@ -21,8 +21,12 @@ std::string printable(std::string_view key);
 std::string cut(std::string_view text);
 // The shortest decimal that reads back as x.
 std::string show_number(double x);
+// A float as TOML writes it (1.0, 1e-15, nan).
+std::string show_float(double x);
 // A string value in TOML syntax.
 std::string show_string(std::string_view text);
+// A key as TOML needs it written: bare, or quoted when it is not a bare key; cut at kShowLimit.
+std::string show_key(std::string_view key);
 // A value as it would be written in TOML, cut at kShowLimit characters.
 std::string show(const toml::node& node, int depth = 0);
 // "a, b, c".
