@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "scene/read_scene.hpp"
+#include "scene/suggest.hpp"
 
 using Catch::Contains;
 using impact::Channel;
@@ -234,6 +235,56 @@ TEST_CASE("scene: an error in a --set names the --set, not the file", "[scene]")
       parse(kBase + "[floor]\ncor = 0.75\n", {"method.name=penalty"}),
       Contains("scene.toml: floor.cor = 0.75: method 'penalty' (--set method.name=penalty) has no "
                "restitution law"));
+}
+
+TEST_CASE("scene: a mistyped table, key, method or name gets a suggestion", "[scene]") {
+  CHECK_SCENE_ERROR(parse(kBase + "[flor]\ncor = 0.5\n"),
+                    Contains("unknown table (allowed: initial, floor, force, time, method, "
+                             "output); did you mean floor?"));
+  CHECK_SCENE_ERROR(parse(kInitial + "[time]\nT = 10.0\nh = 0.001\nhh = 0.1\n" + kDirect),
+                    Contains("time.hh = 0.1: unknown key (allowed in [time]: T, h); did you mean "
+                             "time.h?"));
+  CHECK_SCENE_ERROR(parse("[initial]\nu0 = 5.0\nv0 = -1.0\nu = 1.0\n" + kTime + kDirect),
+                    Contains("; did you mean initial.u0?"));
+  CHECK_SCENE_ERROR(parse(kBase + "[floor]\nCOR = 0.5\n"), Contains("; did you mean floor.cor?"));
+  CHECK_SCENE_ERROR(parse(kBase + "[output]\nchanels = ['u']\n"),
+                    Contains("; did you mean output.channels?"));
+  // A key of another table.
+  CHECK_SCENE_ERROR(parse(kInitial + "[time]\nT = 10.0\nh = 0.001\nphi = 0.0\n" + kDirect),
+                    Contains("time.phi = 0.0: unknown key") && Contains("did you mean floor.phi?"));
+  // Nothing close: no suggestion.
+  CHECK_SCENE_ERROR(parse(kBase + "[time]\nx = 1\n"), !Contains("did you mean"));
+  CHECK_SCENE_ERROR(parse(kBase + "[initial]\nvelocity = 1\n"), !Contains("did you mean"));
+  // The same through --set.
+  CHECK_SCENE_ERROR(
+      parse(kBase, {"time.hh=1"}),
+      Contains("--set time.hh=1: time.hh = 1: unknown key") && Contains("did you mean time.h?"));
+  CHECK_SCENE_ERROR(parse(kBase, {"tme.h=1"}), Contains("--set tme.h=1: tme: unknown table") &&
+                                                   Contains("did you mean time?"));
+  CHECK_SCENE_ERROR(parse(kBase, {"tiem.h=1"}), Contains("did you mean time?"));  // a swap
+  CHECK(impact::edit_distance("tiem", "time") == 1);
+  CHECK(impact::edit_distance("epsilom", "EPSILON") == 1);
+  CHECK(impact::edit_distance("", "abc") == 3);
+  CHECK(impact::edit_distance("ca", "abc") == 3);  // optimal string alignment: not 2
+  // Method keys, and a key of another method.
+  CHECK_SCENE_ERROR(parse(with_method("[method]\nname = \"fb_newton\"\nepsilom = 1e-12\n")),
+                    Contains("; did you mean method.epsilon?"));
+  CHECK_SCENE_ERROR(parse(kBase, {"method.name=penalty", "method.stifness=1e7"}),
+                    Contains("; did you mean method.stiffness?"));
+  CHECK_SCENE_ERROR(parse(with_method("[method]\nname = \"direct\"\ntheta = 0.5\n")),
+                    Contains("unknown key for method 'direct' (allowed: name, free_flight); "
+                             "theta is a key of moreau_jean"));
+  // Names: methods, steppers, free-flight forms, channels.
+  CHECK_SCENE_ERROR(parse(kBase, {"method.name=fb-newton"}), Contains("did you mean fb_newton?"));
+  CHECK_SCENE_ERROR(parse(kBase, {"method.name=Direct"}), Contains("did you mean direct?"));
+  CHECK_SCENE_ERROR(parse(kBase, {"method.name=newton"}), Contains("did you mean fb_newton?"));
+  CHECK_SCENE_ERROR(parse(kBase, {"method.name=runge_kutta"}), !Contains("did you mean"));
+  CHECK_SCENE_ERROR(parse(kBase, {"method.name=penalty", "method.stepper=rk8"}),
+                    Contains("did you mean rk8pd?"));
+  CHECK_SCENE_ERROR(parse(kBase, {"method.free_flight=closed"}),
+                    Contains("did you mean closed_form?"));
+  CHECK_SCENE_ERROR(parse(kBase + "[output]\nchannels = ['u', 'e']\n"),
+                    Contains("output.channels = 'e'") && Contains("did you mean E?"));
 }
 
 TEST_CASE("scene: values of the wrong type are rejected", "[scene]") {

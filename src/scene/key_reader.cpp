@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "scene/scene_error.hpp"
+#include "scene/suggest.hpp"
 #include "scene/toml_text.hpp"
 
 namespace impact {
@@ -16,6 +17,20 @@ std::string key_name(std::string_view table, std::string_view key) {
 std::vector<std::string_view> choices(const KeySpec& spec) {
   const auto names = spec.choices();
   return {names.begin(), names.end()};
+}
+
+// Where a key of another table, or of another method, belongs: "; did you mean floor.phi?" or
+// "; theta is a key of moreau_jean".
+std::string elsewhere(std::string_view table, std::string_view key) {
+  const auto same = [&](std::string_view name) { return edit_distance(name, key) == 0; };
+  for (const KeySpec& spec : scene_keys())
+    if (spec.table != table && same(spec.key))
+      return "; did you mean " + std::string(spec.table) + "." + std::string(spec.key) + "?";
+  std::vector<std::string_view> methods;
+  for (const KeySpec& spec : method_keys())
+    if (spec.table == table && same(spec.key)) methods.push_back(spec.method);
+  if (methods.empty()) return "";
+  return "; " + show_key(key) + " is a key of " + join(methods);
 }
 
 }  // namespace
@@ -43,12 +58,18 @@ void KeyReader::only(const toml::table& table, std::string_view where,
     for (auto a : allowed) known = known || a == key.str();
     if (known) continue;
     if (where.empty())
-      fail_table(key.str(), show_key(key.str()), "unknown table (allowed: " + join(allowed) + ")");
+      fail_table(
+          key.str(), show_key(key.str()),
+          "unknown table (allowed: " + join(allowed) + ")" + did_you_mean(key.str(), allowed));
+    // A key of another table first: phi in [time] is floor.phi, not a typo of h.
+    std::string hint = elsewhere(where, key.str());
+    if (hint.empty()) hint = did_you_mean(key.str(), allowed, std::string(where) + ".");
     // A key also shows its value, which helps to spot what the typo meant.
     fail_value(where, key.str(), node,
-               unknown.empty()
-                   ? "unknown key (allowed in [" + std::string(where) + "]: " + join(allowed) + ")"
-                   : unknown + " (allowed: " + join(allowed) + ")");
+               (unknown.empty()
+                    ? "unknown key (allowed in [" + std::string(where) + "]: " + join(allowed) + ")"
+                    : unknown + " (allowed: " + join(allowed) + ")") +
+                   hint);
   }
 }
 
@@ -95,7 +116,8 @@ KeyValue KeyReader::value(const KeySpec& spec, const toml::node& node) const {
         fail_value(spec.table, spec.key, node, "must be a string, one of " + join(choices(spec)));
       for (auto c : spec.choices())
         if (c == s->get()) return s->get();
-      fail_value(spec.table, spec.key, node, "must be one of " + join(choices(spec)));
+      fail_value(spec.table, spec.key, node,
+                 "must be one of " + join(choices(spec)) + did_you_mean(s->get(), choices(spec)));
     }
     case KeyType::names:
       break;  // read by its own table's reader (output.channels depends on the method)

@@ -18,6 +18,7 @@
 #include "scene/method_keys.hpp"
 #include "scene/overrides.hpp"
 #include "scene/scene_keys.hpp"
+#include "scene/suggest.hpp"
 #include "scene/toml_text.hpp"
 
 namespace impact {
@@ -55,7 +56,8 @@ void read_channels(const KeyReader& r, const toml::node& channels, const MethodI
     if (!ok)
       r.fail_value("output", "channels", item,
                    "is not a channel method '" + std::string(method.name) +
-                       "' can produce (allowed: " + join(allowed) + ")");
+                       "' can produce (allowed: " + join(allowed) + ")" +
+                       (s ? did_you_mean(s->get(), allowed) : ""));
   }
 }
 

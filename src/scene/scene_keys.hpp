@@ -42,7 +42,7 @@ struct KeySpec {
   std::string_view table, key;
   std::string_view method = {};  // [method] keys: the method that reads it; empty: every scene
   KeyType type = KeyType::number;
-  Range range = {};                                           // number, integer
+  Range range = {};                                          // number, integer
   std::span<const std::string_view> (*choices)() = nullptr;  // name, names
   bool required = false;
   std::string_view also = {};  // what the reader checks beyond the range, for --help
