@@ -204,6 +204,28 @@ TEST_CASE("cli: bad --set overrides exit 2", "[cli]") {
   CHECK(read_csv(dir / "X.csv").rows.size() == 101);
 }
 
+TEST_CASE("cli: --unset removes a key for one run", "[cli]") {
+  TempDir dir;
+  const std::string scene = quote(kSource + "/experiments/figure4/cor075.toml");
+  // Penalty has no restitution law: on a COR scene it needs the COR removed.
+  Result r = dir.run("run " + scene + " --set method.name=penalty --set time.T=0.1 -o X.csv");
+  CHECK(r.code == 2);
+  CHECK_THAT(r.err,
+             Contains("floor.cor = 0.75: method 'penalty'") && Contains("--unset floor.cor"));
+  r = dir.run("run " + scene +
+              " --set method.name=penalty --unset floor.cor --set time.T=0.1 -o X.csv");
+  CHECK(r.code == 0);
+  CHECK_THAT(r.err, Contains("impact: penalty, 100 steps"));
+  CHECK(read_csv(dir / "X.csv").rows.size() == 101);
+  // Unsetting what is not there names it.
+  r = dir.run("run " + scene + " --unset floor.e -o Y.csv");
+  CHECK(r.code == 2);
+  CHECK_THAT(r.err, Contains("--unset floor.e: there is no floor.e in") && Contains("cor075.toml"));
+  r = dir.run("run " + scene + " --unset -o Y.csv");
+  CHECK(r.code == 2);
+  CHECK(dir.entries() == std::set<std::string>{"X.csv"});
+}
+
 TEST_CASE("cli: a bad output path exits 2 and leaves nothing behind", "[cli]") {
   TempDir dir;
   const std::string scene = quote(kSource + "/experiments/figure3/no_cor.toml");

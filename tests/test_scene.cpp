@@ -533,6 +533,46 @@ TEST_CASE("scene: --set overrides and adds keys before validation", "[scene]") {
   CHECK_SCENE_ERROR(parse(kBase, {"flor.cor=0.5"}), Contains("flor") && Contains("unknown table"));
 }
 
+TEST_CASE("scene: --unset removes a key or a table for one run", "[scene]") {
+  const auto unset = [](const std::string& text, const std::vector<std::string>& sets,
+                        const std::vector<std::string>& unsets) {
+    return parse_scene(text, "scene.toml", sets, unsets);
+  };
+  const std::string cor = kBase + "[floor]\nphi = 1.0\ncor = 0.75\n[force]\nf = -9.8\n";
+  // Penalty on a COR scene: the COR has to go.
+  impact::Scene s = unset(cor, {"method.name=penalty"}, {"floor.cor"});
+  CHECK(impact::method_name(s.method) == "penalty");
+  CHECK_FALSE(s.model.cor.has_value());
+  CHECK(s.model.phi == 1.0);
+  s = unset(cor, {}, {"force", "floor.phi", "floor.cor", "floor.cor"});  // twice is once
+  CHECK(s.model.f == 0.0);
+  CHECK(s.model.phi == 0.0);
+  // A whole table, then a --set into it: unsets come first.
+  s = unset(cor, {"floor.phi=0.5"}, {"floor"});
+  CHECK(s.model.phi == 0.5);
+  CHECK_FALSE(s.model.cor.has_value());
+
+  // What is not there is an error naming it.
+  CHECK_SCENE_ERROR(unset(kBase, {}, {"floor.cor"}),
+                    Contains("--unset floor.cor: there is no [floor] in scene.toml"));
+  CHECK_SCENE_ERROR(unset(kBase, {}, {"time.hh"}),
+                    Contains("--unset time.hh: there is no time.hh in scene.toml") &&
+                        Contains("did you mean time.h?"));
+  CHECK_SCENE_ERROR(unset(kBase, {}, {"tme"}),
+                    Contains("--unset tme: there is no [tme] in scene.toml; did you mean time?"));
+  // What it removes is still required.
+  CHECK_SCENE_ERROR(unset(kBase, {}, {"initial.u0"}),
+                    Contains("--unset initial.u0: initial.u0: required key is missing"));
+  CHECK_SCENE_ERROR(unset(kBase, {}, {"time"}),
+                    Contains("--unset time: [time]: required table is missing"));
+  // Malformed, or also given to --set.
+  for (const char* bad : {"", ".h", "time.", "a.b.c", "floor.cor=1"})
+    CHECK_SCENE_ERROR(unset(cor, {}, {bad}),
+                      Contains("--unset " + std::string(bad) + ": expected table.key or table"));
+  CHECK_SCENE_ERROR(unset(cor, {"floor.cor=0.5"}, {"floor.cor"}),
+                    Contains("--unset floor.cor: --set floor.cor=0.5 sets it too"));
+}
+
 TEST_CASE("scene: load_scene names the path of a missing or invalid file", "[scene]") {
   TempDir dir;
   const std::string missing = dir.path + "/no_such_scene.toml";

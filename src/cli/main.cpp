@@ -86,10 +86,11 @@ bool same_file(const std::string& a, const std::string& b) {
 // `in_place` tells main() whether rows may have gone out before a failure (to standard output, a
 // pipe, a device) or nothing was written (a file that appears only when the run succeeds).
 int run(const std::string& scene_path, const std::vector<std::string>& overrides,
-        const std::string& out_path, bool quiet, bool& in_place) {
+        const std::vector<std::string>& unsets, const std::string& out_path, bool quiet,
+        bool& in_place) {
   using namespace impact;
   const auto start = Clock::now();
-  Run loaded = load_run(scene_path, overrides);
+  Run loaded = load_run(scene_path, overrides, unsets);
   const Scene& scene = loaded.scene;
   const bool to_stdout = out_path.empty() || out_path == "-";
   if (!to_stdout && same_file(out_path, scene_path))
@@ -161,7 +162,7 @@ int main(int argc, char** argv) {
   CLI::App* run_cmd = app.add_subcommand(
       "run", "Run one scene and write its trajectory as CSV (header t,<channels>).");
   std::string scene_path, out_path;
-  std::vector<std::string> overrides;
+  std::vector<std::string> overrides, unsets;
   bool quiet = false;
   run_cmd->add_option("SCENE", scene_path, "Scene file (TOML); see README.md, 'Scenes'")
       ->required();
@@ -171,6 +172,11 @@ int main(int argc, char** argv) {
                    "(a bare word as a string), e.g. --set time.h=1e-4 --set floor.cor=0.5 "
                    "--set method.name=exact. Repeatable.")
       ->allow_extra_args(false);  // one value per --set, so `--set a=1 SCENE` still sees SCENE
+  run_cmd
+      ->add_option("--unset", unsets,
+                   "Remove a key or a table of the scene file for this run, table.key or table "
+                   "(applied before --set), e.g. --unset floor.cor. Repeatable.")
+      ->allow_extra_args(false);
   run_cmd->add_option("--out,-o", out_path,
                       "Output CSV file (default: standard output). Written to a temporary file "
                       "and renamed when the run succeeds; a device, a pipe or /dev/stdout is "
@@ -198,7 +204,7 @@ int main(int argc, char** argv) {
 
   bool in_place = true;
   try {
-    return run(scene_path, overrides, out_path, quiet, in_place);
+    return run(scene_path, overrides, unsets, out_path, quiet, in_place);
   } catch (const impact::SceneError& e) {
     std::fprintf(stderr, "impact: error: %s\n", e.what());
     return kBadInput;

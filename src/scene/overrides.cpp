@@ -4,6 +4,7 @@
 #include <cctype>
 
 #include "scene/scene_error.hpp"
+#include "scene/suggest.hpp"
 #include "scene/toml_text.hpp"
 
 namespace impact {
@@ -60,6 +61,42 @@ void apply_set(toml::table& root, const std::string& assignment, Origins& origin
     if (!word)
       fail("the value '" + cut(value) + "' is not a TOML value (" + cut(e.description()) + ")");
     table->insert_or_assign(key, value);
+  }
+  origins.record(tname, key, change);
+}
+
+void apply_unset(toml::table& root, const std::string& path, const std::vector<std::string>& sets,
+                 Origins& origins) {
+  const std::string change = "--unset " + cut(path);
+  auto fail = [&](const std::string& why) { throw SceneError(change + ": " + why); };
+  const auto dot = path.find('.');
+  const std::string tname = path.substr(0, dot);
+  const std::string key = dot == std::string::npos ? "" : path.substr(dot + 1);
+  if (tname.empty() || path.find('=') != std::string::npos ||
+      (dot != std::string::npos && (key.empty() || key.find('.') != std::string::npos)))
+    fail("expected table.key or table, e.g. floor.cor or force");
+  for (const auto& set : sets)
+    if (set.substr(0, set.find('=')) == path) fail("--set " + cut(set) + " sets it too; give one");
+
+  const auto names = [](const toml::table& table) {
+    std::vector<std::string_view> out;
+    for (auto&& [name, node] : table) out.push_back(name.str());
+    return out;
+  };
+  // A second --unset of the same key or table has nothing left to remove, and need not.
+  const bool removed = origins.of(tname, key) == change || origins.of(tname) == "--unset " + tname;
+  if (key.empty()) {
+    if (!root.erase(tname)) {
+      if (removed) return;
+      fail("there is no [" + show_key(tname) + "] in " + origins.file() +
+           did_you_mean(tname, names(root)));
+    }
+  } else if (toml::table* table = root[tname].as_table(); !table || !table->erase(key)) {
+    if (removed) return;
+    fail(table ? "there is no " + show_key(tname) + "." + show_key(key) + " in " + origins.file() +
+                     did_you_mean(key, names(*table), tname + ".")
+               : "there is no [" + show_key(tname) + "] in " + origins.file() +
+                     did_you_mean(tname, names(root)));
   }
   origins.record(tname, key, change);
 }

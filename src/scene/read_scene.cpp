@@ -114,7 +114,8 @@ Scene build(const toml::table& root, const Origins& origins) {
                  "method '" + std::string(method.name) + "'" +
                      (named == origins.of("floor", "cor") ? "" : " (" + named + ")") +
                      " has no restitution law (its compliance contact is elastic); remove "
-                     "floor.cor or choose direct, fb_newton, moreau_jean or exact");
+                     "floor.cor (--unset floor.cor) or choose direct, fb_newton, moreau_jean or "
+                     "exact");
   }
   read_method_keys(r, *root.get("method")->as_table(), scene);
   return scene;
@@ -185,25 +186,30 @@ std::string read_scene_file(const std::string& path) {
 }
 
 Scene parse_with(toml::table root, const std::string& source,
-                 const std::vector<std::string>& overrides) {
+                 const std::vector<std::string>& overrides,
+                 const std::vector<std::string>& unsets) {
   Origins origins(source);
+  for (const auto& u : unsets) apply_unset(root, u, overrides, origins);
   for (const auto& o : overrides) apply_set(root, o, origins);
   return build(root, origins);
 }
 
 }  // namespace
 
-Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
-  return parse_with(parse_toml(read_scene_file(path), path), path, overrides);
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides,
+                 const std::vector<std::string>& unsets) {
+  return parse_with(parse_toml(read_scene_file(path), path), path, overrides, unsets);
 }
 
 Scene parse_scene(std::string_view text, const std::string& source,
-                  const std::vector<std::string>& overrides) {
-  return parse_with(parse_toml(text, source), source, overrides);
+                  const std::vector<std::string>& overrides,
+                  const std::vector<std::string>& unsets) {
+  return parse_with(parse_toml(text, source), source, overrides, unsets);
 }
 
-Run load_run(const std::string& path, const std::vector<std::string>& overrides) {
-  Scene scene = load_scene(path, overrides);
+Run load_run(const std::string& path, const std::vector<std::string>& overrides,
+             const std::vector<std::string>& unsets) {
+  Scene scene = load_scene(path, overrides, unsets);
   try {
     AnyStepper stepper = make_stepper(scene);
     return {std::move(scene), std::move(stepper)};
