@@ -9,7 +9,9 @@
 #include <vector>
 
 #include "scene/read_scene.hpp"
+#include "scene/scene_keys.hpp"
 #include "scene/suggest.hpp"
+#include "scene/toml_text.hpp"
 
 using Catch::Contains;
 using impact::Channel;
@@ -455,6 +457,50 @@ TEST_CASE("scene: the method and its keys are checked", "[scene]") {
   CHECK_SCENE_ERROR(parse(with_method("[method]\nname = \"penalty\"\nstepper = \"euler\"\n")),
                     Contains("scene.toml") && Contains("method.stepper = 'euler'") &&
                         Contains("must be one of") && Contains("rk8pd"));
+}
+
+// `impact run --help` prints the key tables (test_cli.cpp checks that); here the reader is held
+// to them: every range's edges and every listed name, for every key.
+TEST_CASE("scene: the reader enforces what the key tables say", "[scene]") {
+  const std::string cor_free = kInitial + kTime + kDirect;
+  const auto check = [&](const impact::KeySpec& spec) {
+    const std::string key = std::string(spec.table) + "." + std::string(spec.key);
+    std::vector<std::string> method;
+    if (!spec.method.empty()) method.push_back("method.name=" + std::string(spec.method));
+    const auto with = [&](const std::string& value) {
+      auto sets = method;
+      sets.push_back(key + "=" + value);
+      return sets;
+    };
+    INFO(key << " (" << spec.method << ")");
+    if (spec.type == impact::KeyType::number || spec.type == impact::KeyType::integer) {
+      const impact::Range& r = spec.range;
+      if (r.text().empty()) return;
+      const double below = r.lo_open ? r.lo : r.lo - 1;
+      CHECK_SCENE_ERROR(parse(cor_free, with(impact::show_number(below))),
+                        Contains(key + " = ") && Contains(r.text()));
+      if (r.bounded()) {
+        CHECK_SCENE_ERROR(parse(cor_free, with(impact::show_number(2 * r.hi + 1))),
+                          Contains(key + " = ") && Contains(r.text()));
+        CHECK_NOTHROW(parse(cor_free, with(impact::show_number(r.hi))));
+      }
+    } else if (spec.type == impact::KeyType::name && key != "method.name") {
+      for (auto choice : spec.choices()) CHECK_NOTHROW(parse(cor_free, with(std::string(choice))));
+      const auto choices = spec.choices();
+      CHECK_SCENE_ERROR(
+          parse(cor_free, with("no_such_name")),
+          Contains("must be one of " + impact::join({choices.begin(), choices.end()})));
+    }
+  };
+  for (const auto& spec : impact::scene_keys()) check(spec);
+  for (const auto& spec : impact::method_keys()) check(spec);
+  // Every method, and every channel some method writes.
+  for (const auto& m : impact::methods())
+    CHECK(impact::method_name(parse(cor_free, {"method.name=" + std::string(m.name)}).method) ==
+          m.name);
+  for (auto channel : impact::find_scene_key("output", "channels")->choices())
+    CHECK_NOTHROW(parse(
+        cor_free, {"method.name=fb_newton", "output.channels=['" + std::string(channel) + "']"}));
 }
 
 TEST_CASE("scene: output channels and decimation are checked", "[scene]") {

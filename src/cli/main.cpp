@@ -11,22 +11,16 @@
 #include <string>
 #include <vector>
 
+#include "cli/help_format.hpp"
 #include "impact/output.hpp"
 #include "impact/registry.hpp"
 #include "impact/run.hpp"
 #include "scene/read_scene.hpp"
+#include "scene/scene_help.hpp"
 
 namespace {
 
 constexpr int kOk = 0, kNumericalFailure = 1, kBadInput = 2;
-
-std::string methods_help() {
-  std::string text = "Methods ([method] name = ...):\n";
-  for (const auto& m : impact::methods())
-    text += "  " + std::string(m.name) + std::string(12 - m.name.size(), ' ') +
-            std::string(m.summary) + "\n";
-  return text;
-}
 
 using Clock = std::chrono::steady_clock;
 
@@ -148,15 +142,18 @@ int main(int argc, char** argv) {
   // instead of the default action of SIGXFSZ, which kills the process and leaves the temporary.
   std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{
-      "impact: a particle falling onto a rigid floor, u'' = N + f, 0 <= u - phi ⟂ N >= 0.\n"
-      "Reproduces J. Ahn and J. R. Wolf, Dynamic impact of a particle, Involve 6:2 (2013).",
+      "impact: a particle falls onto a rigid floor, u'' = N + f, 0 <= u - phi ⟂ N >= 0.\n"
+      "Reproduces Ahn and Wolf, Dynamic impact of a particle, Involve 6:2 (2013).",
       "impact"};
+  app.formatter(std::make_shared<impact::cli::WrappingFormatter>());  // before the subcommands
   app.set_version_flag("--version", "impact 0.1.0");
-  app.footer(methods_help() +
-             "\nExit codes: 0 ok, 1 numerical failure or write error, 2 bad input.\n"
-             "Run options: --set table.key=value (repeatable), --out/-o FILE, --quiet/-q;\n"
-             "see 'impact run --help'.\n"
-             "Example: impact run experiments/figure3/no_cor.toml --set time.h=1e-4 --out u.csv");
+  const std::string exit_codes =
+      "Exit codes: 0 ok, 1 numerical failure or write error, 2 bad input.\n"
+      "Example: impact run experiments/figure3/no_cor.toml --set time.h=1e-4 -o u.csv";
+  app.footer(
+      "'impact run --help' lists the run options, every scene key with its default and\n"
+      "range, the methods and the channels.\n" +
+      exit_codes);
   app.require_subcommand(1);
 
   CLI::App* run_cmd = app.add_subcommand(
@@ -184,10 +181,13 @@ int main(int argc, char** argv) {
   run_cmd->add_flag("--quiet,-q", quiet,
                     "Do not print the progress and summary lines on standard error");
   run_cmd->footer(
-      "Rows are written at t = l h for every output.every-th step l, and always at t = 0 and\n"
-      "at the last step; numbers have 17 significant digits so that they read back exactly.\n"
-      "N in the row at t_l is N^{l-1} of (4-1): the contact impulse over (t_{l-1}, t_l] / h.\n\n" +
-      methods_help() + "\nExit codes: 0 ok, 1 numerical failure or write error, 2 bad input.");
+      impact::wrap(
+          "Rows are written at t = l h for every output.every-th step l, and always for "
+          "the first and the last step; numbers have 17 significant digits, so they "
+          "read back exactly.\nN in the row at t_l is N^{l-1} of (4-1): the contact impulse "
+          "over (t_{l-1}, t_l] divided by h.",
+          impact::cli::kHelpWidth) +
+      "\n\n" + impact::scene_help(impact::cli::kHelpWidth) + "\n" + exit_codes);
 
   try {
     app.parse(argc, argv);

@@ -33,7 +33,8 @@ void set_free_flight(Scene& s, const KeyValue& v) {
       std::get<std::string>(v) == "paper" ? FreeFlightForm::paper : FreeFlightForm::closed_form;
 }
 constexpr std::string_view kFreeFlight =
-    "free flight between contacts: closed_form, or the paper's stepped form";
+    "free flight between contacts: in closed form from the last contact, or (5-1) term by term at "
+    "every step, as printed";
 
 // Every method's keys, in the order --help lists them. A method without keys (exact) has none.
 const KeySpec kMethodKeys[] = {

@@ -95,8 +95,7 @@ const KeySpec kKeys[] = {
      .key = "channels",
      .type = KeyType::names,
      .choices = channel_names,
-     .also = "iterations: fb_newton, penalty",
-     .meaning = "the CSV's columns after t",
+     .meaning = "the CSV's columns after t (see Channels)",
      // Read by read_channels(), since what a method can write depends on the method.
      .get = [](const Scene& s) -> KeyValue {
        std::vector<std::string> names;
