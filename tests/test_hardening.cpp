@@ -1,9 +1,8 @@
 // Bad input and hostile environments: every row of the table in tests/README.md that
-// tests/test_cli.cpp, tests/test_scene*.cpp and tests/test_scene_text.cpp do not already cover, the
-// regression inputs of the fuzzer (tests/fuzz), and the long-run behaviour (memory, progress,
-// interruption). The `impact` command runs as a separate process (IMPACT_CLI) in a fresh directory;
-// each case checks the exit code, the message, and that no partial output or temporary file is
-// left.
+// tests/test_cli.cpp and tests/test_scene*.cpp do not already cover, the regression inputs of the
+// fuzzer (tests/fuzz), and the long-run behaviour (memory, progress, interruption). The `impact`
+// command runs as a separate process (IMPACT_CLI) in a fresh directory; each case checks the exit
+// code, the message, and that no partial output or temporary file is left.
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>

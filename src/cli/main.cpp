@@ -147,13 +147,13 @@ int main(int argc, char** argv) {
       "impact"};
   app.formatter(std::make_shared<impact::cli::WrappingFormatter>());  // before the subcommands
   app.set_version_flag("--version", "impact 0.1.0");
-  const std::string exit_codes =
+  const std::string epilogue =  // the exit codes and an example
       "Exit codes: 0 ok, 1 numerical failure or write error, 2 bad input.\n"
       "Example: impact run experiments/figure3/no_cor.toml --set time.h=1e-4 -o u.csv";
   app.footer(
       "'impact run --help' lists the run options, every scene key with its default and\n"
       "range, the methods and the channels.\n" +
-      exit_codes);
+      epilogue);
   app.require_subcommand(1);
 
   CLI::App* run_cmd = app.add_subcommand(
@@ -187,7 +187,7 @@ int main(int argc, char** argv) {
           "read back exactly.\nN in the row at t_l is N^{l-1} of (4-1): the contact impulse "
           "over (t_{l-1}, t_l] divided by h.",
           impact::cli::kHelpWidth) +
-      "\n\n" + impact::scene_help(impact::cli::kHelpWidth) + "\n" + exit_codes);
+      "\n\n" + impact::scene_help(impact::cli::kHelpWidth) + "\n" + epilogue);
 
   try {
     app.parse(argc, argv);

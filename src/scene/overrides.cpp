@@ -84,7 +84,8 @@ void apply_unset(toml::table& root, const std::string& path, const std::vector<s
     return out;
   };
   // A second --unset of the same key or table has nothing left to remove, and need not.
-  const bool removed = origins.of(tname, key) == change || origins.of(tname) == "--unset " + tname;
+  const bool removed =
+      origins.of(tname, key) == change || origins.of(tname) == "--unset " + cut(tname);
   if (key.empty()) {
     if (!root.erase(tname)) {
       if (removed) return;
