@@ -1,5 +1,6 @@
 // Running the real `impact` binary from a test: a scratch directory, the command's exit status
-// and what it wrote. Shared by test_cli.cpp and test_hardening.cpp.
+// and what it wrote. Shared by test_cli.cpp, test_hardening.cpp, test_scene_text.cpp and
+// test_help.cpp.
 #pragma once
 
 #include <sys/wait.h>
@@ -95,5 +96,20 @@ class TempDir {
  private:
   std::string path_, capture_;
 };
+
+// A short scene that reaches the floor (u0 = 0.05, v0 = -1: contact at t = 0.05).
+const std::string kShort =
+    "[initial]\nu0 = 0.05\nv0 = -1.0\n[time]\nT = 0.1\nh = 0.001\n[method]\nname = \"direct\"\n";
+
+// The run must fail with `code`, a message matching `says`, and leave the directory as it was.
+#define CHECK_FAILS_CLEANLY(dir, args, expected_code, says) \
+  do {                                                      \
+    const auto before_ = (dir).entries();                   \
+    const Result r_ = (dir).run(args);                      \
+    INFO("impact " << (args) << "\nstderr: " << r_.err);    \
+    CHECK(r_.code == (expected_code));                      \
+    CHECK_THAT(r_.err, says);                               \
+    CHECK((dir).entries() == before_);                      \
+  } while (false)
 
 }  // namespace impact::testing

@@ -1,5 +1,5 @@
 // Bad input and hostile environments: every row of the table in tests/README.md that
-// tests/test_cli.cpp and tests/test_scene.cpp do not already cover, the regression inputs of the
+// tests/test_cli.cpp and tests/test_scene*.cpp do not already cover, the regression inputs of the
 // fuzzer (tests/fuzz), and the long-run behaviour (memory, progress, interruption). The `impact`
 // command runs as a separate process (IMPACT_CLI) in a fresh directory; each case checks the exit
 // code, the message, and that no partial output or temporary file is left.
@@ -35,21 +35,6 @@ namespace {
 
 const std::string kSource = IMPACT_SOURCE_DIR;
 const std::string kFigure3 = kSource + "/experiments/figure3/no_cor.toml";
-
-// A short scene that reaches the floor (u0 = 0.05, v0 = -1: contact at t = 0.05).
-const std::string kShort =
-    "[initial]\nu0 = 0.05\nv0 = -1.0\n[time]\nT = 0.1\nh = 0.001\n[method]\nname = \"direct\"\n";
-
-// The run must fail with `code`, a message matching `says`, and leave the directory as it was.
-#define CHECK_FAILS_CLEANLY(dir, args, expected_code, says) \
-  do {                                                      \
-    const auto before_ = (dir).entries();                   \
-    const Result r_ = (dir).run(args);                      \
-    INFO("impact " << (args) << "\nstderr: " << r_.err);    \
-    CHECK(r_.code == (expected_code));                      \
-    CHECK_THAT(r_.err, says);                               \
-    CHECK((dir).entries() == before_);                      \
-  } while (false)
 
 }  // namespace
 

@@ -29,10 +29,6 @@ namespace {
 const std::string kSource = IMPACT_SOURCE_DIR;
 const std::string kFigure3 = kSource + "/experiments/figure3/no_cor.toml";
 
-// A short scene that reaches the floor (u0 = 0.05, v0 = -1: contact at t = 0.05).
-const std::string kShort =
-    "[initial]\nu0 = 0.05\nv0 = -1.0\n[time]\nT = 0.1\nh = 0.001\n[method]\nname = \"direct\"\n";
-
 // u0 + v0 h = 2e308 overflows on the first step: a run that starts fails with exit 1, so exit 2
 // shows that the output path was refused before the run.
 const std::string kOverflow =

@@ -253,11 +253,11 @@ TEST_CASE("sweep: invalid points and options exit 2 naming the point and the key
   const Case cases[] = {
       // Valid one by one, invalid together: the third point has h > T.
       {"--vary time.T=1,10 --vary time.h=0.5,5",
-       "point 2 of 4 (time.T=1, time.h=5): " + kFigure4 + ": time.h = 5: must be <= time.T = 1"},
+       "point 2 of 4 (time.T=1, time.h=5): --set time.h=5: time.h = 5: must be <= time.T = 1"},
       {"--vary floor.phi=0,6", "point 2 of 2 (floor.phi=6)"},
-      {"--vary floor.phi=0,6", "initial.u0 = 5: must be >= floor.phi = 6"},
+      {"--vary floor.phi=0,6", "initial.u0 = 5.0: must be >= floor.phi = 6"},
       // The largest value of a range is checked by the scene reader.
-      {"--vary floor.cor=0:1.5:4", "point 4 of 4 (floor.cor=1.5): " + kFigure4 + ": floor.cor"},
+      {"--vary floor.cor=0:1.5:4", "point 4 of 4 (floor.cor=1.5): --set floor.cor=1.5: floor.cor"},
       {"--vary time.h=1e-20,1e-3", "point 1 of 2 (time.h=9.9999999999999995e-21)"},
       {"--set method.name=fb_newton --vary method.max_iterations=1:10:3",
        "point 2 of 3 (method.max_iterations=5.5)"},

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/help_format.hpp"
 #include "cli/plot.hpp"
 #include "cli/sweep.hpp"
 #include "impact/error_norms.hpp"
@@ -20,20 +21,13 @@
 #include "impact/registry.hpp"
 #include "impact/run.hpp"
 #include "scene/read_scene.hpp"
+#include "scene/scene_help.hpp"
 
 namespace {
 
 constexpr int kOk = 0, kNumericalFailure = 1, kBadInput = 2;
 // Beyond these a run asks for output.every or --force before it starts.
 constexpr double kMaxRowsUnasked = 1e8, kMaxBytesUnasked = 4e9;
-
-std::string methods_help() {
-  std::string text = "Methods ([method] name = ...):\n";
-  for (const auto& m : impact::methods())
-    text += "  " + std::string(m.name) + std::string(12 - m.name.size(), ' ') +
-            std::string(m.summary) + "\n";
-  return text;
-}
 
 using Clock = std::chrono::steady_clock;
 
@@ -93,10 +87,11 @@ bool same_file(const std::string& a, const std::string& b) {
 // `in_place` tells main() whether rows may have gone out before a failure (to standard output, a
 // pipe, a device) or nothing was written (a file that appears only when the run succeeds).
 int run(const std::string& scene_path, const std::vector<std::string>& overrides,
-        const std::string& out_path, bool quiet, bool against_exact, bool force, bool& in_place) {
+        const std::vector<std::string>& unsets, const std::string& out_path, bool quiet,
+        bool against_exact, bool force, bool& in_place) {
   using namespace impact;
   const auto start = Clock::now();
-  Run loaded = load_run(scene_path, overrides);
+  Run loaded = load_run(scene_path, overrides, unsets);
   const Scene& scene = loaded.scene;
   // T not a multiple of h: the grid stops short of T (Grid::covering); say so, and which h fits.
   if (!quiet && scene.grid.end() < scene.T && scene.T - scene.grid.end() > 1e-12 * scene.T)
@@ -196,21 +191,24 @@ int main(int argc, char** argv) {
   // instead of the default action of SIGXFSZ, which kills the process and leaves the temporary.
   std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{
-      "impact: a particle falling onto a rigid floor, u'' = N + f, 0 <= u - phi ⟂ N >= 0.\n"
-      "Reproduces J. Ahn and J. R. Wolf, Dynamic impact of a particle, Involve 6:2 (2013).",
+      "impact: a particle falls onto a rigid floor, u'' = N + f, 0 <= u - phi ⟂ N >= 0.\n"
+      "Reproduces Ahn and Wolf, Dynamic impact of a particle, Involve 6:2 (2013).",
       "impact"};
+  app.formatter(std::make_shared<impact::cli::WrappingFormatter>());  // before the subcommands
   app.set_version_flag("--version", "impact 0.1.0");
-  app.footer(methods_help() +
-             "\nExit codes: 0 ok, 1 numerical failure or write error, 2 bad input.\n"
-             "Run options: --set table.key=value (repeatable), --out/-o FILE, --quiet/-q;\n"
-             "see 'impact run --help'.\n"
-             "Example: impact run experiments/figure3/no_cor.toml --set time.h=1e-4 --out u.csv");
+  const std::string epilogue =  // the exit codes and an example
+      "Exit codes: 0 ok, 1 numerical failure or write error, 2 bad input.\n"
+      "Example: impact run experiments/figure3/no_cor.toml --set time.h=1e-4 -o u.csv";
+  app.footer(
+      "'impact run --help' lists the run options, every scene key with its default and\n"
+      "range, the methods and the channels.\n" +
+      epilogue);
   app.require_subcommand(1);
 
   CLI::App* run_cmd = app.add_subcommand(
       "run", "Run one scene and write its trajectory as CSV (header t,<channels>).");
   std::string scene_path, out_path;
-  std::vector<std::string> overrides;
+  std::vector<std::string> overrides, unsets;
   bool quiet = false;
   std::string against;
   run_cmd->add_option("SCENE", scene_path, "Scene file (TOML); see README.md, 'Scenes'")
@@ -221,6 +219,11 @@ int main(int argc, char** argv) {
                    "(a bare word as a string), e.g. --set time.h=1e-4 --set floor.cor=0.5 "
                    "--set method.name=exact. Repeatable.")
       ->allow_extra_args(false);  // one value per --set, so `--set a=1 SCENE` still sees SCENE
+  run_cmd
+      ->add_option("--unset", unsets,
+                   "Remove a key or a table of the scene file for this run, table.key or table "
+                   "(applied before --set), e.g. --unset floor.cor. Repeatable.")
+      ->allow_extra_args(false);
   run_cmd->add_option("--out,-o", out_path,
                       "Output CSV file (default: standard output). Written to a temporary file "
                       "and renamed when the run succeeds; a device, a pipe or /dev/stdout is "
@@ -238,10 +241,13 @@ int main(int argc, char** argv) {
   run_cmd->add_flag("--quiet,-q", quiet,
                     "Do not print the progress and summary lines on standard error");
   run_cmd->footer(
-      "Rows are written at t = l h for every output.every-th step l, and always at t = 0 and\n"
-      "at the last step; numbers have 17 significant digits so that they read back exactly.\n"
-      "N in the row at t_l is N^{l-1} of (4-1): the contact impulse over (t_{l-1}, t_l] / h.\n\n" +
-      methods_help() + "\nExit codes: 0 ok, 1 numerical failure or write error, 2 bad input.");
+      impact::wrap(
+          "Rows are written at t = l h for every output.every-th step l, and always for "
+          "the first and the last step; numbers have 17 significant digits, so they "
+          "read back exactly.\nN in the row at t_l is N^{l-1} of (4-1): the contact impulse "
+          "over (t_{l-1}, t_l] divided by h.",
+          impact::cli::kHelpWidth) +
+      "\n\n" + impact::scene_help(impact::cli::kHelpWidth) + "\n" + epilogue);
 
   CLI::App* plot_cmd = app.add_subcommand(
       "plot",
@@ -278,7 +284,7 @@ int main(int argc, char** argv) {
   bool in_place = true;
   try {
     if (sweep_cmd->parsed()) return impact::cli::run_sweep(sweep);
-    return run(scene_path, overrides, out_path, quiet, against == "exact", force, in_place);
+    return run(scene_path, overrides, unsets, out_path, quiet, against == "exact", force, in_place);
   } catch (const impact::SceneError& e) {
     std::fprintf(stderr, "impact: error: %s\n", e.what());
     return kBadInput;

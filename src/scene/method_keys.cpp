@@ -1,8 +1,5 @@
 #include "scene/method_keys.hpp"
 
-#include <cmath>
-#include <cstdint>
-#include <sstream>
 #include <string_view>
 #include <vector>
 
@@ -12,132 +9,142 @@
 namespace impact {
 namespace {
 
-// Typed, range-checked access to the keys of [method]; remembers which keys were read so that a
-// key the method does not read (a typo) is rejected with the list of allowed keys.
-class MethodKeys {
- public:
-  MethodKeys(const toml::table& table, const std::string& source, std::string_view method)
-      : table_(table), source_(source), method_(method) {}
-
-  // A number in [lo, hi] (open at lo when lo_open), defaulting to `fallback` when absent.
-  double number(std::string_view key, double fallback, double lo, double hi, bool lo_open = false) {
-    const toml::node* node = find(key);
-    if (!node) return fallback;
-    double x;
-    if (node->is_integer())
-      x = static_cast<double>(node->as_integer()->get());
-    else if (node->is_floating_point())
-      x = node->as_floating_point()->get();
-    else
-      fail(key, *node, "must be a number");
-    if (!(std::isfinite(x) && (lo_open ? x > lo : x >= lo) && x <= hi)) {
-      std::ostringstream range;
-      range << "must be in " << (lo_open ? "(" : "[") << lo << ", " << hi << "]";
-      fail(key, *node, range.str());
-    }
-    return x;
-  }
-
-  std::int64_t integer(std::string_view key, std::int64_t fallback, std::int64_t lo,
-                       std::int64_t hi) {
-    const toml::node* node = find(key);
-    if (!node) return fallback;
-    if (!node->is_integer() || node->as_integer()->get() < lo || node->as_integer()->get() > hi)
-      fail(key, *node,
-           "must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
-    return node->as_integer()->get();
-  }
-
-  std::string choice(std::string_view key, std::string_view fallback,
-                     const std::vector<std::string_view>& allowed) {
-    const toml::node* node = find(key);
-    if (!node) return std::string(fallback);
-    if (node->is_string())
-      for (auto a : allowed)
-        if (a == node->as_string()->get()) return std::string(a);
-    fail(key, *node, "must be one of " + join(allowed));
-  }
-
-  void reject_unread() const {
-    for (auto&& [key, node] : table_) {
-      bool read = false;
-      for (const auto& r : read_) read = read || r == key.str();
-      if (!read) {
-        std::vector<std::string_view> names(read_.begin(), read_.end());
-        fail(
-            key.str(), node,
-            "unknown key for method '" + std::string(method_) + "' (allowed: " + join(names) + ")");
-      }
-    }
-  }
-
- private:
-  const toml::node* find(std::string_view key) {
-    read_.emplace_back(key);
-    return table_.get(key);
-  }
-  [[noreturn]] void fail(std::string_view key, const toml::node& node,
-                         const std::string& allowed) const {
-    throw SceneError(source_ + ": method." + std::string(key) + " = " + show(node) + ": " +
-                     allowed);
-  }
-
-  const toml::table& table_;
-  const std::string& source_;
-  std::string_view method_;
-  std::vector<std::string> read_{"name"};
-};
-
-// free_flight = "closed_form" | "paper" (free_flight.hpp).
-FreeFlightForm read_free_flight(MethodKeys& keys, FreeFlightForm fallback) {
-  return keys.choice("free_flight", fallback == FreeFlightForm::paper ? "paper" : "closed_form",
-                     {"closed_form", "paper"}) == "paper"
-             ? FreeFlightForm::paper
-             : FreeFlightForm::closed_form;
-}
-
-DirectParams read(MethodKeys& keys, DirectParams p) {
-  p.free_flight = read_free_flight(keys, p.free_flight);
-  return p;
-}
-
-FbNewtonParams read(MethodKeys& keys, FbNewtonParams p) {
-  p.epsilon = keys.number("epsilon", p.epsilon, 0.0, 1.0, true);
-  p.tolerance = keys.number("tolerance", p.tolerance, 0.0, 1e-1, true);
-  p.max_iterations = static_cast<int>(keys.integer("max_iterations", p.max_iterations, 1, 10000));
-  p.free_flight = read_free_flight(keys, p.free_flight);
-  return p;
-}
-
-MoreauJeanParams read(MethodKeys& keys, MoreauJeanParams p) {
-  p.theta = keys.number("theta", p.theta, 0.0, 1.0);
-  return p;
-}
-
-PenaltyParams read(MethodKeys& keys, PenaltyParams p) {
-  p.stiffness = keys.number("stiffness", p.stiffness, 0.0, 1e15, true);
-  const auto names = penalty_stepper_names();
-  p.stepper = keys.choice("stepper", p.stepper, {names.begin(), names.end()});
-  p.rtol = keys.number("rtol", p.rtol, 0.0, 1.0, true);
-  p.atol = keys.number("atol", p.atol, 0.0, 1.0, true);
-  return p;
-}
-
-// Methods without keys.
 template <class Params>
-Params read(MethodKeys&, Params p) {
-  return p;
+Params& params(Scene& s) {
+  return std::get<Params>(s.method);
 }
+template <class Params>
+const Params& params(const Scene& s) {
+  return std::get<Params>(s.method);
+}
+
+std::span<const std::string_view> free_flight_forms() {
+  static constexpr std::string_view kForms[] = {"closed_form", "paper"};
+  return kForms;
+}
+template <class Params>
+KeyValue get_free_flight(const Scene& s) {
+  return std::string(params<Params>(s).free_flight == FreeFlightForm::paper ? "paper"
+                                                                            : "closed_form");
+}
+template <class Params>
+void set_free_flight(Scene& s, const KeyValue& v) {
+  params<Params>(s).free_flight =
+      std::get<std::string>(v) == "paper" ? FreeFlightForm::paper : FreeFlightForm::closed_form;
+}
+constexpr std::string_view kFreeFlight =
+    "free flight between contacts: in closed form from the last contact, or (5-1) term by term at "
+    "every step, as printed";
+
+// Every method's keys, in the order --help lists them. A method without keys (exact) has none.
+const KeySpec kMethodKeys[] = {
+    {.table = "method",
+     .key = "free_flight",
+     .method = "direct",
+     .type = KeyType::name,
+     .choices = free_flight_forms,
+     .meaning = kFreeFlight,
+     .get = get_free_flight<DirectParams>,
+     .set = set_free_flight<DirectParams>},
+    {.table = "method",
+     .key = "epsilon",
+     .method = "fb_newton",
+     .type = KeyType::number,
+     .range = {.lo = 0.0, .hi = 1.0, .lo_open = true},
+     .meaning = "smoothing parameter of (5-3)",
+     .get = [](const Scene& s) -> KeyValue { return params<FbNewtonParams>(s).epsilon; },
+     .set = [](Scene& s,
+               const KeyValue& v) { params<FbNewtonParams>(s).epsilon = std::get<double>(v); }},
+    {.table = "method",
+     .key = "tolerance",
+     .method = "fb_newton",
+     .type = KeyType::number,
+     .range = {.lo = 0.0, .hi = 0.1, .lo_open = true},
+     .meaning = "Newton's stopping rule, relative residual",
+     .get = [](const Scene& s) -> KeyValue { return params<FbNewtonParams>(s).tolerance; },
+     .set = [](Scene& s,
+               const KeyValue& v) { params<FbNewtonParams>(s).tolerance = std::get<double>(v); }},
+    {.table = "method",
+     .key = "max_iterations",
+     .method = "fb_newton",
+     .type = KeyType::integer,
+     .range = {.lo = 1.0, .hi = 10000.0},
+     .meaning = "Newton iterations per step before a numerical failure",
+     .get = [](const Scene& s) -> KeyValue {
+       return std::int64_t{params<FbNewtonParams>(s).max_iterations};
+     },
+     .set =
+         [](Scene& s, const KeyValue& v) {
+           params<FbNewtonParams>(s).max_iterations = static_cast<int>(std::get<std::int64_t>(v));
+         }},
+    {.table = "method",
+     .key = "free_flight",
+     .method = "fb_newton",
+     .type = KeyType::name,
+     .choices = free_flight_forms,
+     .meaning = kFreeFlight,
+     .get = get_free_flight<FbNewtonParams>,
+     .set = set_free_flight<FbNewtonParams>},
+    {.table = "method",
+     .key = "theta",
+     .method = "moreau_jean",
+     .type = KeyType::number,
+     .range = {.lo = 0.0, .hi = 1.0},
+     .meaning = "the theta of the scheme",
+     .get = [](const Scene& s) -> KeyValue { return params<MoreauJeanParams>(s).theta; },
+     .set = [](Scene& s,
+               const KeyValue& v) { params<MoreauJeanParams>(s).theta = std::get<double>(v); }},
+    {.table = "method",
+     .key = "stiffness",
+     .method = "penalty",
+     .type = KeyType::number,
+     .range = {.lo = 0.0, .hi = 1e15, .lo_open = true},
+     .meaning = "c_N of the compliance N = c_N max(phi - u, 0)",
+     .get = [](const Scene& s) -> KeyValue { return params<PenaltyParams>(s).stiffness; },
+     .set = [](Scene& s,
+               const KeyValue& v) { params<PenaltyParams>(s).stiffness = std::get<double>(v); }},
+    {.table = "method",
+     .key = "stepper",
+     .method = "penalty",
+     .type = KeyType::name,
+     .choices = penalty_stepper_names,
+     .meaning = "GSL odeiv2 stepper",
+     .get = [](const Scene& s) -> KeyValue { return params<PenaltyParams>(s).stepper; },
+     .set = [](Scene& s,
+               const KeyValue& v) { params<PenaltyParams>(s).stepper = std::get<std::string>(v); }},
+    {.table = "method",
+     .key = "rtol",
+     .method = "penalty",
+     .type = KeyType::number,
+     .range = {.lo = 0.0, .hi = 1.0, .lo_open = true},
+     .meaning = "relative error tolerance of the ODE driver",
+     .get = [](const Scene& s) -> KeyValue { return params<PenaltyParams>(s).rtol; },
+     .set = [](Scene& s,
+               const KeyValue& v) { params<PenaltyParams>(s).rtol = std::get<double>(v); }},
+    {.table = "method",
+     .key = "atol",
+     .method = "penalty",
+     .type = KeyType::number,
+     .range = {.lo = 0.0, .hi = 1.0, .lo_open = true},
+     .meaning = "absolute error tolerance of the ODE driver",
+     .get = [](const Scene& s) -> KeyValue { return params<PenaltyParams>(s).atol; },
+     .set = [](Scene& s,
+               const KeyValue& v) { params<PenaltyParams>(s).atol = std::get<double>(v); }},
+};
 
 }  // namespace
 
-MethodParams read_method_keys(const toml::table& method, const std::string& source,
-                              const MethodInfo& info) {
-  MethodKeys keys(method, source, info.name);
-  MethodParams params = std::visit(
-      [&](const auto& defaults) { return MethodParams(read(keys, defaults)); }, info.defaults);
-  keys.reject_unread();
-  return params;
+std::span<const KeySpec> method_keys() {
+  return kMethodKeys;
+}
+
+void read_method_keys(const KeyReader& r, const toml::table& method, Scene& scene) {
+  const std::string_view name = method_name(scene.method);
+  for (const KeySpec& spec : kMethodKeys)
+    if (spec.method == name)
+      if (const toml::node* node = method.get(spec.key)) spec.set(scene, r.value(spec, *node));
+  r.only(method, "method", key_names("method", name),
+         "unknown key for method '" + std::string(name) + "'");
 }
 
 }  // namespace impact

@@ -14,7 +14,11 @@
 #include <limits>
 #include <sstream>
 
+#include "scene/key_reader.hpp"
 #include "scene/method_keys.hpp"
+#include "scene/overrides.hpp"
+#include "scene/scene_keys.hpp"
+#include "scene/suggest.hpp"
 #include "scene/toml_text.hpp"
 
 namespace impact {
@@ -23,178 +27,15 @@ namespace {
 // A scene is a few hundred bytes; a file this large is not one (and /dev/zero would never end).
 constexpr std::size_t kMaxSceneBytes = std::size_t{1} << 20;
 
-class Reader {
- public:
-  Reader(const toml::table& root, const std::string& source) : root_(root), source_(source) {}
-
-  [[noreturn]] void fail(std::string_view key, const std::string& what) const {
-    throw SceneError(source_ + ": " + std::string(key) + ": " + what);
-  }
-  [[noreturn]] void fail_value(std::string_view key, const toml::node& node,
-                               const std::string& allowed) const {
-    throw SceneError(source_ + ": " + std::string(key) + " = " + show(node) + ": " + allowed);
-  }
-
-  // Every table and key present must be one we know (catches typos).
-  void only(const toml::table& table, std::string_view where,
-            const std::vector<std::string_view>& allowed) const {
-    for (auto&& [key, node] : table) {
-      bool known = false;
-      for (auto a : allowed) known = known || a == key.str();
-      if (!known) {
-        if (where.empty())
-          fail(printable(key.str()), "unknown table (allowed: " + join(allowed) + ")");
-        // A key also shows its value, which helps to spot what the typo meant.
-        fail_value(std::string(where) + "." + printable(key.str()), node,
-                   "unknown key (allowed in [" + std::string(where) + "]: " + join(allowed) + ")");
-      }
-    }
-  }
-
-  const toml::table* table(std::string_view name, bool required) const {
-    const toml::node* node = root_.get(name);
-    if (!node) {
-      if (required) fail("[" + std::string(name) + "]", "required table is missing");
-      return nullptr;
-    }
-    if (!node->is_table()) fail_value(name, *node, "must be a table");
-    return node->as_table();
-  }
-
-  std::optional<double> number(const toml::table* t, std::string_view tname,
-                               std::string_view key) const {
-    if (!t) return std::nullopt;
-    const toml::node* node = t->get(key);
-    if (!node) return std::nullopt;
-    std::string full = std::string(tname) + "." + std::string(key);
-    double x;
-    if (node->is_integer()) {
-      x = static_cast<double>(node->as_integer()->get());
-    } else if (node->is_floating_point()) {
-      x = node->as_floating_point()->get();
-    } else {
-      fail_value(full, *node, "must be a number");
-    }
-    if (!std::isfinite(x)) fail_value(full, *node, "must be a finite number");
-    return x;
-  }
-
-  double required_number(const toml::table* t, std::string_view tname, std::string_view key) const {
-    auto x = number(t, tname, key);
-    if (!x) fail(std::string(tname) + "." + std::string(key), "required key is missing");
-    return *x;
-  }
-
- private:
-  const toml::table& root_;
-  const std::string& source_;
-};
-
-void apply_override(toml::table& root, const std::string& assignment, const std::string& source) {
-  auto fail = [&](const std::string& why) {
-    throw SceneError(source + ": --set " + assignment + ": " + why);
-  };
-  auto eq = assignment.find('=');
-  if (eq == std::string::npos) fail("expected table.key=value");
-  std::string path = assignment.substr(0, eq);
-  std::string value = assignment.substr(eq + 1);
-  auto dot = path.find('.');
-  if (dot == std::string::npos || dot == 0 || dot + 1 == path.size() ||
-      path.find('.', dot + 1) != std::string::npos)
-    fail("the key must be table.key, e.g. time.h");
-  std::string tname = path.substr(0, dot), key = path.substr(dot + 1);
-
-  toml::node_view<toml::node> slot = root[tname];
-  if (!slot) root.insert(tname, toml::table{});
-  toml::table* table = root[tname].as_table();
-  if (!table) fail("[" + tname + "] is not a table");
-
-  if (find_non_ascii_outside_comments(value) != std::string_view::npos)
-    fail("the value '" + value + "' has a non-ASCII character (a scene's values are ASCII)");
-  // A TOML value (number, boolean, string, array); a bare word is read as a string.
-  try {
-    toml::table parsed = toml::parse("value = " + value);
-    // One value, not a value and more TOML after it ("0.01\nT = 5" would set time.T too).
-    if (parsed.size() != 1) fail("the value '" + value + "' is not a single TOML value");
-    table->insert_or_assign(key, *parsed.get("value"));
-  } catch (const toml::parse_error& e) {
-    // A bare word is a name (method, stepper, channel): a letter, then letters, digits, _ - or .;
-    // anything else (1e400, [1,) is a malformed value, with toml++'s reason.
-    const bool word = !value.empty() && std::isalpha(static_cast<unsigned char>(value[0])) &&
-                      std::all_of(value.begin(), value.end(), [](unsigned char c) {
-                        return std::isalnum(c) || c == '_' || c == '-' || c == '.';
-                      });
-    if (!word)
-      fail("the value '" + value + "' is not a TOML value (" + std::string(e.description()) + ")");
-    table->insert_or_assign(key, value);
-  }
-}
-
-// [initial], [floor] and [force] into the model and the initial state.
-void read_physics(const Reader& r, Scene& scene) {
-  const toml::table* initial = r.table("initial", true);
-  r.only(*initial, "initial", {"u0", "v0"});
-  scene.initial.u = r.required_number(initial, "initial", "u0");
-  scene.initial.v = r.required_number(initial, "initial", "v0");
-
-  if (const toml::table* floor = r.table("floor", false)) {
-    r.only(*floor, "floor", {"phi", "cor"});
-    scene.model.phi = r.number(floor, "floor", "phi").value_or(0.0);
-    scene.model.cor = r.number(floor, "floor", "cor");
-    if (scene.model.cor && (*scene.model.cor < 0.0 || *scene.model.cor > 1.0))
-      r.fail_value("floor.cor", *floor->get("cor"), "must be in [0, 1]");
-  }
-  if (scene.initial.u < scene.model.phi)
-    r.fail_value("initial.u0", *initial->get("u0"),
-                 "must be >= floor.phi = " + show_number(scene.model.phi) +
-                     " (the particle starts above the floor)");
-
-  if (const toml::table* force = r.table("force", false)) {
-    r.only(*force, "force", {"f"});
-    scene.model.f = r.required_number(force, "force", "f");
-  }
-}
-
-void read_time(const Reader& r, Scene& scene) {
-  const toml::table* time = r.table("time", true);
-  r.only(*time, "time", {"T", "h"});
-  scene.T = r.required_number(time, "time", "T");
-  const double h = r.required_number(time, "time", "h");
-  if (scene.T <= 0.0) r.fail_value("time.T", *time->get("T"), "must be > 0");
-  if (h <= 0.0) r.fail_value("time.h", *time->get("h"), "must be > 0");
-  if (h > scene.T)
-    r.fail_value("time.h", *time->get("h"), "must be <= time.T = " + show(*time->get("T")));
-  const double ratio = scene.T / h;
-  if (!(ratio <= kMaxGridSteps))
-    r.fail_value("time.h", *time->get("h"),
-                 "T/h = " + show_number(ratio) +
-                     " steps is too many to count exactly (at most 2^53 = 9007199254740992)");
-  scene.grid = Grid::covering(scene.T, h);
-}
-
-// method.name: the method whose keys read_method_keys() reads once the rest is valid.
-const MethodInfo& read_method_name(const Reader& r) {
-  const toml::table* method = r.table("method", true);
-  const toml::node* name = method->get("name");
-  if (!name) r.fail("method.name", "required key is missing");
-  if (!name->is_string()) r.fail_value("method.name", *name, "must be a string");
-  const MethodInfo* info = find_method(name->as_string()->get());
-  if (!info) {
-    std::vector<std::string_view> names;
-    for (const auto& m : methods()) names.push_back(m.name);
-    r.fail_value("method.name", *name, "unknown method (allowed: " + join(names) + ")");
-  }
-  return *info;
-}
-
-void read_channels(const Reader& r, const toml::node& channels, const MethodInfo& method,
+void read_channels(const KeyReader& r, const toml::node& channels, const MethodInfo& method,
                    OutputSpec& output) {
   const toml::array* list = channels.as_array();
   if (!list || list->empty())
-    r.fail_value("output.channels", channels, "must be a non-empty array of channel names");
+    r.fail_value("output", "channels", channels, "must be a non-empty array of channel names");
   output.channels.clear();
-  std::vector<std::string_view> allowed{"u", "v", "N", "E"};
-  if (method.has_iterations) allowed.push_back("iterations");
+  std::vector<std::string_view> allowed;
+  for (auto name : find_scene_key("output", "channels")->choices())
+    if (name != channel_name(Channel::iterations) || method.has_iterations) allowed.push_back(name);
   for (const toml::node& item : *list) {
     const toml::value<std::string>* s = item.as_string();
     bool ok = false;
@@ -204,72 +45,99 @@ void read_channels(const Reader& r, const toml::node& channels, const MethodInfo
         if (c == Channel::iterations && !method.has_iterations) break;
         for (Channel seen : output.channels)
           if (seen == c)
-            r.fail_value("output.channels", item, "is listed twice (at most once each)");
+            r.fail_value("output", "channels", item, "is listed twice (at most once each)");
         output.channels.push_back(c);
         ok = true;
       }
     }
     if (!ok)
-      r.fail_value("output.channels", item,
+      r.fail_value("output", "channels", item,
                    "is not a channel method '" + std::string(method.name) +
-                       "' can produce (allowed: " + join(allowed) + ")");
+                       "' can produce (allowed: " + join(allowed) + ")" +
+                       (s ? did_you_mean(s->get(), allowed) : ""));
   }
 }
 
-void read_output(const Reader& r, const MethodInfo& method, Scene& scene) {
-  if (const toml::table* output = r.table("output", false)) {
-    r.only(*output, "output", {"channels", "every"});
-    if (const toml::node* every = output->get("every")) {
-      if (!every->is_integer() || every->as_integer()->get() < 1)
-        r.fail_value("output.every", *every, "must be an integer >= 1");
-      scene.output.every = every->as_integer()->get();
-    }
-    if (const toml::node* channels = output->get("channels"))
-      read_channels(r, *channels, method, scene.output);
+// The value of table.key, which the reader has seen.
+const toml::node& node_at(const toml::table& root, std::string_view table, std::string_view key) {
+  return *root.get(table)->as_table()->get(key);
+}
+
+// Every table against the key specs (scene_keys.hpp), then what no single key can check: u0 >=
+// phi, h <= T and T/h countable, the channels the method can write, E representable, and a COR
+// only for a method with an impact law. The method's own keys come last.
+Scene build(const toml::table& root, const Origins& origins) {
+  const KeyReader r(root, origins);
+  std::vector<std::string_view> tables;
+  for (const TableSpec& t : scene_tables()) tables.push_back(t.name);
+  r.only(root, "", tables);
+  Scene scene;
+  for (const TableSpec& t : scene_tables()) {
+    const toml::table* table = r.table(t.name, t.required);
+    if (!table) continue;
+    if (t.name != "method") r.only(*table, t.name, key_names(t.name));  // method: by its keys
+    for (const KeySpec& spec : scene_keys())
+      if (spec.table == t.name && spec.set) r.read(*table, spec, scene);
   }
+
+  if (scene.initial.u < scene.model.phi)
+    r.fail_value("initial", "u0", node_at(root, "initial", "u0"),
+                 "must be >= floor.phi = " + show_number(scene.model.phi) +
+                     " (the particle starts above the floor)");
+  const double h = scene.grid.h;
+  if (h > scene.T)
+    r.fail_value("time", "h", node_at(root, "time", "h"),
+                 "must be <= time.T = " + show(node_at(root, "time", "T")));
+  const double ratio = scene.T / h;
+  if (!(ratio <= kMaxGridSteps))
+    r.fail_value("time", "h", node_at(root, "time", "h"),
+                 "T/h = " + show_number(ratio) +
+                     " steps is too many to count exactly (at most 2^53 = 9007199254740992)");
+  scene.grid = Grid::covering(scene.T, h);
+
+  const MethodInfo& method = method_info(scene.method);
+  if (const toml::node* channels = root.at_path("output.channels").node())
+    read_channels(r, *channels, method, scene.output);
   for (Channel c : scene.output.channels)
     if (c == Channel::E && !std::isfinite(energy(scene.model, scene.initial)))
-      r.fail("output.channels",
+      r.fail("output", "channels",
              "E: the initial energy v0^2/2 - f u0 (3-1) is beyond the double range (v0 = " +
                  show_number(scene.initial.v) + ", f = " + show_number(scene.model.f) +
                  ", u0 = " + show_number(scene.initial.u) + ")");
-}
-
-Scene build(const toml::table& root, const std::string& source) {
-  const Reader r(root, source);
-  r.only(root, "", {"initial", "floor", "force", "time", "method", "output"});
-  Scene scene;
-  read_physics(r, scene);
-  read_time(r, scene);
-  const MethodInfo& method = read_method_name(r);
-  read_output(r, method, scene);
   // Compliance has no impact law to apply a COR to: refuse rather than silently run elastic.
-  if (scene.model.cor && !method.takes_cor)
-    r.fail("floor.cor = " + show_number(*scene.model.cor),
-           "method '" + std::string(method.name) +
-               "' has no restitution law (its compliance contact is elastic); remove floor.cor "
-               "or choose direct, fb_newton, moreau_jean or exact");
-  scene.method = read_method_keys(*root.get("method")->as_table(), source, method);
+  if (scene.model.cor && !method.takes_cor) {
+    const std::string& named = origins.of("method", "name");
+    r.fail_value("floor", "cor", node_at(root, "floor", "cor"),
+                 "method '" + std::string(method.name) + "'" +
+                     (named == origins.of("floor", "cor") ? "" : " (" + named + ")") +
+                     " has no restitution law (its compliance contact is elastic); remove "
+                     "floor.cor (--unset floor.cor) or choose direct, fb_newton, moreau_jean or "
+                     "exact");
+  }
+  read_method_keys(r, *root.get("method")->as_table(), scene);
   return scene;
 }
 
 // The TOML document, or SceneError with the parser's message and the line and column it names.
 toml::table parse_toml(std::string_view text, const std::string& source) {
+  // TOML asks for a valid UTF-8 document, which may start with a byte-order mark (Windows editors
+  // write one): skipped, as toml++ does, so that columns on line 1 count what an editor shows.
+  constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
+  if (text.starts_with(kByteOrderMark)) text.remove_prefix(kByteOrderMark.size());
   if (const std::size_t at = find_non_ascii_outside_comments(text); at != std::string_view::npos) {
-    // Line and column as toml++ counts them: the column in characters, not bytes.
-    const std::size_t newline = text.rfind('\n', at);
-    const std::size_t line_start = newline == std::string_view::npos ? 0 : newline + 1;
-    const std::size_t line =
-        1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + at, '\n'));
-    std::size_t column = 1;
-    for (std::size_t i = line_start; i < at; ++i)
-      column += (static_cast<unsigned char>(text[i]) & 0xC0) != 0x80;  // not a continuation byte
+    if (text.substr(at).starts_with(kByteOrderMark))
+      throw SceneError(source + ":" + line_and_column(text, at) +
+                       ": not a valid scene: a UTF-8 byte-order mark (U+FEFF) is allowed only at "
+                       "the start of the file");
     char byte[8];
     std::snprintf(byte, sizeof byte, "0x%02x", static_cast<unsigned char>(text[at]));
-    throw SceneError(source + ":" + std::to_string(line) + ":" + std::to_string(column) +
+    throw SceneError(source + ":" + line_and_column(text, at) +
                      ": not a valid scene: non-ASCII byte " + byte +
                      " outside a comment (a scene's keys and values are ASCII)");
   }
+  if (const TooDeep deep = find_too_deep(text); deep.at != std::string_view::npos)
+    throw SceneError(source + ":" + line_and_column(text, deep.at) +
+                     ": not a valid scene: " + deep.what());
   try {
     return toml::parse(text, source);
   } catch (const toml::parse_error& e) {
@@ -277,7 +145,7 @@ toml::table parse_toml(std::string_view text, const std::string& source) {
     msg << source;
     if (e.source().begin.line > 0)
       msg << ":" << e.source().begin.line << ":" << e.source().begin.column;
-    msg << ": not a valid TOML scene: " << e.description();
+    msg << ": not a valid TOML scene: " << cut(e.description());
     throw SceneError(msg.str());
   }
 }
@@ -315,24 +183,30 @@ std::string read_scene_file(const std::string& path) {
 }
 
 Scene parse_with(toml::table root, const std::string& source,
-                 const std::vector<std::string>& overrides) {
-  for (const auto& o : overrides) apply_override(root, o, source);
-  return build(root, source);
+                 const std::vector<std::string>& overrides,
+                 const std::vector<std::string>& unsets) {
+  Origins origins(source);
+  for (const auto& u : unsets) apply_unset(root, u, overrides, origins);
+  for (const auto& o : overrides) apply_set(root, o, origins);
+  return build(root, origins);
 }
 
 }  // namespace
 
-Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
-  return parse_with(parse_toml(read_scene_file(path), path), path, overrides);
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides,
+                 const std::vector<std::string>& unsets) {
+  return parse_with(parse_toml(read_scene_file(path), path), path, overrides, unsets);
 }
 
 Scene parse_scene(std::string_view text, const std::string& source,
-                  const std::vector<std::string>& overrides) {
-  return parse_with(parse_toml(text, source), source, overrides);
+                  const std::vector<std::string>& overrides,
+                  const std::vector<std::string>& unsets) {
+  return parse_with(parse_toml(text, source), source, overrides, unsets);
 }
 
-Run load_run(const std::string& path, const std::vector<std::string>& overrides) {
-  Scene scene = load_scene(path, overrides);
+Run load_run(const std::string& path, const std::vector<std::string>& overrides,
+             const std::vector<std::string>& unsets) {
+  Scene scene = load_scene(path, overrides, unsets);
   try {
     AnyStepper stepper = make_stepper(scene);
     return {std::move(scene), std::move(stepper)};

@@ -17,18 +17,21 @@ namespace impact {
 inline constexpr double kMaxGridSteps = 9007199254740992.0;
 
 // Reads and validates a scene file; `overrides` are "table.key=value" strings (the value is read
-// as a TOML value, or as a string when it is a bare word) applied before validation. Throws
-// SceneError.
-Scene load_scene(const std::string& path, const std::vector<std::string>& overrides = {});
+// as a TOML value, or as a string when it is a bare word) and `unsets` "table.key" or "table"
+// strings (each must be in the file), applied before validation, unsets first. Throws SceneError.
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides = {},
+                 const std::vector<std::string>& unsets = {});
 // The same from text in memory; `source` names it in messages.
 Scene parse_scene(std::string_view text, const std::string& source,
-                  const std::vector<std::string>& overrides = {});
+                  const std::vector<std::string>& overrides = {},
+                  const std::vector<std::string>& unsets = {});
 
 // A scene and its solver, built once.
 struct Run {
   Scene scene;
   AnyStepper stepper;
 };
-Run load_run(const std::string& path, const std::vector<std::string>& overrides = {});
+Run load_run(const std::string& path, const std::vector<std::string>& overrides = {},
+             const std::vector<std::string>& unsets = {});
 
 }  // namespace impact

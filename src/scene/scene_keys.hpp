@@ -1,0 +1,73 @@
+// Every key a scene may have: its table, type, range and meaning. The reader checks values against
+// these tables and `impact run --help` prints them, so the two cannot disagree. Defaults are not
+// written here: they are those of the plain structs (impact/scene.hpp, each method's Params),
+// read through each key's accessor.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "impact/scene.hpp"
+
+namespace impact {
+
+enum class KeyType { number, integer, name, names };
+
+// The values a number or integer key accepts; the whole real line means any finite number.
+struct Range {
+  double lo = -std::numeric_limits<double>::infinity();
+  double hi = std::numeric_limits<double>::infinity();
+  bool lo_open = false;
+
+  bool bounded() const {
+    return lo > -std::numeric_limits<double>::infinity() &&
+           hi < std::numeric_limits<double>::infinity();
+  }
+  bool contains(double x) const { return (lo_open ? x > lo : x >= lo) && x <= hi; }
+  // "> 0", ">= 1", "in (0, 1]"; empty for the whole line.
+  std::string text() const;
+};
+
+// A key's value as the reader hands it to the scene: a number, an integer, a name, a list of
+// names, or nothing (a key without a default).
+using KeyValue =
+    std::variant<std::monostate, double, std::int64_t, std::string, std::vector<std::string>>;
+
+struct KeySpec {
+  std::string_view table, key;
+  std::string_view method = {};  // [method] keys: the method that reads it; empty: every scene
+  KeyType type = KeyType::number;
+  Range range = {};                                          // number, integer
+  std::span<const std::string_view> (*choices)() = nullptr;  // name, names
+  bool required = false;
+  std::string_view also = {};  // what the reader checks beyond the range, for --help
+  std::string_view meaning = {};
+  KeyValue (*get)(const Scene&) = nullptr;  // its default (nullptr: required, or none)
+  void (*set)(Scene&, const KeyValue&) = nullptr;
+};
+
+struct TableSpec {
+  std::string_view name;
+  bool required;
+};
+
+// The tables of a scene, in the order they are read.
+std::span<const TableSpec> scene_tables();
+// The keys of every scene, table by table (method.name included).
+std::span<const KeySpec> scene_keys();
+// The keys of [method] that each method reads (method_keys.cpp).
+std::span<const KeySpec> method_keys();
+
+// The key table.key of every scene (nullptr if there is none).
+const KeySpec* find_scene_key(std::string_view table, std::string_view key);
+// The names of table's keys ("name" and the method's keys for [method], given a method).
+std::vector<std::string_view> key_names(std::string_view table, std::string_view method = {});
+// A value for a message or --help: 0.5, 1e-15, 50, 'rk8pd', ['u', 'v'], none.
+std::string show_value(const KeyValue& value);
+
+}  // namespace impact
