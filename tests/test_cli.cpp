@@ -413,10 +413,36 @@ TEST_CASE("cli: a run of more than 1e8 rows asks for output.every or --force bef
   // h = 1e-8 over T = 10: 1e9 steps, 1e9 + 1 rows of four channels (about 125 GB).
   Result r = dir.run("run " + scene + " --set time.h=1e-8 -o X.csv");
   CHECK(r.code == 2);
-  CHECK_THAT(r.err, Contains("1000000001 rows") && Contains("output.every") &&
-                        Contains("--force"));
+  CHECK_THAT(r.err, Contains("1000000001 rows") && Contains("output.every") && Contains("--force"));
   CHECK(dir.entries().empty());  // nothing written, not even a temporary
   // With every = 1e3 the same run is 1e6 rows: allowed (checked only up to the start: T cut short).
   r = dir.run("run " + scene + " --set time.h=1e-8 --set time.T=1e-5 -q -o X.csv");
   CHECK(r.code == 0);
+}
+
+TEST_CASE("cli: extreme steps and a penalty run without end are refused with their reason",
+          "[cli]") {
+  TempDir dir;
+  const std::string scene = std::string(IMPACT_SOURCE_DIR) + "/experiments/figure3/no_cor.toml";
+  // 2/h^2 of (5-1) overflows (h = 1e-160) or underflows (h = 1e300): exit 2 naming h, before the
+  // run, for the schemes that use it; exact and moreau_jean run.
+  Result r = dir.run("run " + scene + " --set time.h=1e-160 --set time.T=1e-160 -o X.csv");
+  CHECK(r.code == 2);
+  CHECK_THAT(r.err, Contains("2/h^2 of (5-1) is not representable for h = 1e-160"));
+  r = dir.run("run " + scene +
+              " --set time.h=1e300 --set time.T=1e300 --set method.name=fb_newton -o X.csv");
+  CHECK(r.code == 2);
+  CHECK(dir.run("run " + scene + " --set time.h=1e-160 --set time.T=1e-160 -q " +
+                "--set method.name=moreau_jean -o X.csv")
+            .code == 0);
+  // A resting particle on a stiff floor with an implicit stepper: the run's budget of ODE steps
+  // ends it with exit 1 and the reason, instead of minutes of work.
+  dir.write("rest.toml",
+            "[initial]\nu0 = 0.0\nv0 = 0.0\n[force]\nf = -9.80665\n[time]\nT = 1.0\nh = 0.001\n"
+            "[method]\nname = \"penalty\"\nstepper = \"rk2imp\"\nstiffness = 1e12\n"
+            "max_ode_steps = 5000\n");
+  r = dir.run("run rest.toml -o R.csv");
+  CHECK(r.code == 1);
+  CHECK_THAT(r.err, Contains("budget of ODE steps") && Contains("method.max_ode_steps"));
+  CHECK(dir.run("run rest.toml --set method.max_ode_steps=-1 -o R.csv").code == 2);
 }

@@ -24,8 +24,8 @@ namespace impact {
 // Figure 4's particle comes to rest (paper_notes/figure4.md).
 enum class FreeFlightForm { closed_form, paper };
 
-// The scheme (4-1)-(4-3) solves for N^l with the factor 2/h^2 of (5-1): for h below ~1.5e-154 it
-// overflows, above ~1.3e154 it underflows to 0, and the step's contact force is then inf or 0/0.
+// The scheme (4-1)-(4-3) solves for N^l with the factor 2/h^2 of (5-1): for h below ~1.06e-154 it
+// overflows, above ~9.48e153 it is subnormal or 0, and the step's contact force is then inf or 0/0.
 // direct and fb_newton refuse such an h (the scene reader says so before the run).
 inline bool scheme_step_representable(double h) {
   const double k = 2 / (h * h);

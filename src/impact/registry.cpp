@@ -1,12 +1,17 @@
 #include "impact/registry.hpp"
 
+#include <charconv>
 #include <stdexcept>
 #include <string>
 
-#include "impact/output.hpp"
-
 namespace impact {
 namespace {
+
+// The shortest decimal that reads back as x, for a message.
+std::string shortest(double x) {
+  char buf[32];
+  return std::string(buf, std::to_chars(buf, buf + sizeof buf, x).ptr);
+}
 
 // In the order of the MethodParams alternatives, so that method_info() can index by them.
 const MethodInfo kMethods[] = {
@@ -47,7 +52,8 @@ AnyStepper make_stepper(const Model& model, double h, const MethodParams& params
        std::holds_alternative<FbNewtonParams>(params)) &&
       !scheme_step_representable(h))
     throw std::invalid_argument("method '" + std::string(method_name(params)) +
-                                "': 2/h^2 of (5-1) is not representable for h = " + round_trip(h));
+                                "': 2/h^2 of (5-1) is not representable for h = " + shortest(h) +
+                                " (time.h must be in [1.1e-154, 9.4e153])");
   return std::visit(
       [&](const auto& p) -> AnyStepper {
         using Params = std::decay_t<decltype(p)>;

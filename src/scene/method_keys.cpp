@@ -130,6 +130,18 @@ const KeySpec kMethodKeys[] = {
      .get = [](const Scene& s) -> KeyValue { return params<PenaltyParams>(s).atol; },
      .set = [](Scene& s,
                const KeyValue& v) { params<PenaltyParams>(s).atol = std::get<double>(v); }},
+    {.table = "method",
+     .key = "max_ode_steps",
+     .method = "penalty",
+     .type = KeyType::integer,
+     .range = {.lo = 0.0, .hi = 9.2e18},
+     .meaning = "ODE steps the whole run may take, then a numerical failure (0: automatic, 1e6 "
+                "plus 1000 per grid step)",
+     .get = [](const Scene& s) -> KeyValue { return params<PenaltyParams>(s).max_ode_steps; },
+     .set =
+         [](Scene& s, const KeyValue& v) {
+           params<PenaltyParams>(s).max_ode_steps = std::get<std::int64_t>(v);
+         }},
 };
 
 }  // namespace
