@@ -134,7 +134,7 @@ const KeySpec kMethodKeys[] = {
      .key = "max_ode_steps",
      .method = "penalty",
      .type = KeyType::integer,
-     .range = {.lo = 0.0, .hi = 9.2e18},
+     .range = {.lo = 0.0, .hi = 999999999999.0},
      .meaning = "ODE steps the whole run may take, then a numerical failure (0: automatic, 1e6 "
                 "plus 1000 per grid step)",
      .get = [](const Scene& s) -> KeyValue { return params<PenaltyParams>(s).max_ode_steps; },
