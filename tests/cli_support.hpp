@@ -13,6 +13,8 @@
 #include <sstream>
 #include <string>
 
+#include "scene/read_scene.hpp"
+
 namespace impact::testing {
 
 // s quoted for the shell.
@@ -100,6 +102,16 @@ class TempDir {
 // A short scene that reaches the floor (u0 = 0.05, v0 = -1: contact at t = 0.05).
 const std::string kShort =
     "[initial]\nu0 = 0.05\nv0 = -1.0\n[time]\nT = 0.1\nh = 0.001\n[method]\nname = \"direct\"\n";
+
+// The SceneError message the reader gives for a scene's text, or "no error".
+inline std::string scene_error(const std::string& text) {
+  try {
+    impact::parse_scene(text, "s.toml");
+  } catch (const impact::SceneError& e) {
+    return e.what();
+  }
+  return "no error";
+}
 
 // The run must fail with `code`, a message matching `says`, and leave the directory as it was.
 #define CHECK_FAILS_CLEANLY(dir, args, expected_code, says) \

@@ -140,14 +140,7 @@ TEST_CASE(
     "hardening: an array value with nan, inf or small numbers is shown in a message "
     "(fuzz finding 3)",
     "[hardening]") {
-  const auto message = [](const std::string& text) {
-    try {
-      impact::parse_scene(text, "s.toml");
-    } catch (const impact::SceneError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
+  const auto message = scene_error;
   CHECK_THAT(message("[initial]\nu=[nan]"),
              Contains("s.toml: initial.u = [nan]: unknown key (allowed in [initial]: u0, v0)"));
   CHECK_THAT(message("[initial]\nu = [0.01, -inf, -9223372036854775808, [1e-300], {a = 'x'}]"),

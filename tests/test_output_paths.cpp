@@ -34,17 +34,6 @@ const std::string kFigure3 = kSource + "/experiments/figure3/no_cor.toml";
 const std::string kOverflow =
     "[initial]\nu0 = 1e308\nv0 = 1e308\n[time]\nT = 10.0\nh = 1.0\n[method]\nname = \"direct\"\n";
 
-// The run must fail with `code`, a message matching `says`, and leave the directory as it was.
-#define CHECK_FAILS_CLEANLY(dir, args, expected_code, says) \
-  do {                                                      \
-    const auto before_ = (dir).entries();                   \
-    const Result r_ = (dir).run(args);                      \
-    INFO("impact " << (args) << "\nstderr: " << r_.err);    \
-    CHECK(r_.code == (expected_code));                      \
-    CHECK_THAT(r_.err, says);                               \
-    CHECK((dir).entries() == before_);                      \
-  } while (false)
-
 // What `impact run s.toml -q` writes to standard output, for comparison.
 std::string expected_csv(const TempDir& dir) {
   const Result r = dir.run("run s.toml -q");

@@ -69,14 +69,7 @@ TEST_CASE("text: a deeply nested key or value exits 2 whatever the stack size", 
                                                "s.toml"});
 
   // Within the bound, and dots in strings, comments and numbers, are left to the reader.
-  const auto message = [](const std::string& text) {
-    try {
-      impact::parse_scene(text, "s.toml");
-    } catch (const impact::SceneError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
+  const auto message = scene_error;
   CHECK_THAT(message("[" + dotted(8) + "]\n"), Contains("s.toml: a: unknown table"));
   CHECK_THAT(message("[" + dotted(9) + "]\n"), Contains("s.toml:1:17: not a valid scene"));
   CHECK_THAT(message("[ a . a . 'a' . \"a\" . a.a.a.a.a ]\n"), Contains("s.toml:1:"));
