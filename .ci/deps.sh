@@ -2,7 +2,8 @@
 # Installs the Debian packages impact needs, skipping those already present.
 # Used by `make deps` (and so by `make all` and `make test`).
 set -euo pipefail
-packages=(cmake make g++ libeigen3-dev libgsl-dev gnuplot-nox catch2 libtomlplusplus-dev libcli11-dev)
+packages=(cmake make g++ libeigen3-dev libgsl-dev gnuplot-nox catch2 libtomlplusplus-dev libcli11-dev
+          libmuparser-dev pkg-config)
 [ -n "${IMPACT_EXTRA_PACKAGES:-}" ] && read -r -a extra <<<"$IMPACT_EXTRA_PACKAGES" && packages+=("${extra[@]}")
 
 missing=()
@@ -17,7 +18,8 @@ if ! command -v apt-get >/dev/null 2>&1; then
   cat >&2 <<MSG
 impact: missing packages: ${missing[*]}
 This is not a Debian-like system, so install by hand: CMake >= 3.18, a C++20 compiler (g++ >= 12),
-Eigen 3, GSL, gnuplot, Catch2 v2, toml++ v3 (compiled library), CLI11 v2, then rerun make.
+Eigen 3, GSL, gnuplot, Catch2 v2, toml++ v3 (compiled library), CLI11 v2, muparser, pkg-config,
+then rerun make.
 MSG
   exit 1
 fi

@@ -1,10 +1,12 @@
-// The model of the paper, Section 2: u'' = N + f (2-1), 0 <= u - phi ⟂ N >= 0 (2-2),
-// with an optional coefficient of restitution (Section 5.2) and a constant body force f.
+// The model of the paper, Section 2: u'' = N + f(t) (2-1), 0 <= u - phi ⟂ N >= 0 (2-2),
+// with an optional coefficient of restitution (Section 5.2). The body force f(t) is a constant,
+// a constant plus a harmonic term, or a muparser expression of t (force.hpp evaluates it).
 #pragma once
 
 #include <cmath>
 #include <cstdint>
 #include <optional>
+#include <string>
 
 namespace impact {
 
@@ -18,13 +20,31 @@ struct State {
 // "no restitution law": each scheme keeps its own impact behaviour (see
 // paper_notes/restitution.md), and the exact reference is elastic (COR = 1), the limit in which
 // Lemma 1 conserves energy.
-struct Model {
-  double phi = 0.0;           // floor position (2-2)
-  double f = 0.0;             // constant body force (2-1)
-  std::optional<double> cor;  // COR = -v_after / v_before, in [0, 1]
+// The time-dependent part of the body force, amplitude sin(omega t + phase): in the frame of a
+// table that vibrates as y = a sin(omega t), amplitude = a omega^2 (vibrating_table).
+struct Harmonic {
+  double amplitude = 0.0;
+  double omega = 0.0;  // rad per unit time, > 0
+  double phase = 0.0;  // rad
+  bool operator==(const Harmonic&) const = default;
 };
 
-// Energy (3-1)/(4-5): E = v^2/2 - f u.
+// The body force of (2-1): f(t) = f + amplitude sin(omega t + phase) + expression(t), each part
+// optional (the scene reader lets a scene give either the harmonic part or an expression).
+struct Model {
+  double phi = 0.0;                    // floor position (2-2)
+  double f = 0.0;                      // the constant part of the body force (2-1)
+  std::optional<double> cor{};         // COR = -v_after / v_before, in [0, 1]
+  std::optional<Harmonic> harmonic{};  // the harmonic part of the body force, if any
+  std::string expression{};            // a muparser expression of t added to it; empty: none
+};
+
+// f(t) = f: the case of the paper's Section 5 and of every closed form in this package.
+inline bool constant_force(const Model& model) {
+  return !model.harmonic && model.expression.empty();
+}
+
+// Energy (3-1)/(4-5): E = v^2/2 - f u, for a constant force.
 inline double energy(const Model& model, const State& s) {
   return 0.5 * s.v * s.v - model.f * s.u;
 }

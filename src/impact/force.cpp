@@ -1,0 +1,141 @@
+#include "impact/force.hpp"
+
+#include <gsl/gsl_integration.h>
+#include <muParser.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <stdexcept>
+
+namespace impact {
+
+namespace {
+
+std::string show(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", x);
+  return text;
+}
+
+const gsl_integration_glfixed_table& gauss_legendre_16() {
+  static const gsl_integration_glfixed_table* table = gsl_integration_glfixed_table_alloc(16);
+  return *table;
+}
+
+}  // namespace
+
+// The parser binds t by address, so each ForceFunction owns its parser and its t.
+struct ForceFunction::Expression {
+  explicit Expression(const std::string& expression) : text(expression) {
+    if (text.size() > kMaxExpressionLength)
+      throw std::invalid_argument("the expression has " + std::to_string(text.size()) +
+                                  " characters; at most " + std::to_string(kMaxExpressionLength) +
+                                  " are allowed");
+    if (text.find_first_not_of(" \t") == std::string::npos)
+      throw std::invalid_argument("the expression is empty; give a function of t");
+    try {
+      parser.DefineVar("t", &t);
+      parser.DefineConst("pi", std::numbers::pi);
+      parser.SetExpr(text);
+      t = 0.0;
+      const double f0 = parser.Eval();
+      if (!std::isfinite(f0))
+        throw std::invalid_argument("the expression is " + show(f0) +
+                                    " at t = 0; it must be finite");
+    } catch (const mu::Parser::exception_type& e) {
+      throw std::invalid_argument("the expression does not parse at position " +
+                                  std::to_string(e.GetPos() + 1) + ": " + e.GetMsg() +
+                                  " (the variable is t; pi is defined)");
+    }
+  }
+  double operator()(double at) const {
+    t = at;
+    double value;
+    try {
+      value = parser.Eval();
+    } catch (const mu::Parser::exception_type& e) {
+      throw std::runtime_error("the force expression fails at t = " + show(at) + ": " + e.GetMsg());
+    }
+    if (!std::isfinite(value))
+      throw std::runtime_error("the force expression is " + show(value) + " at t = " + show(at) +
+                               "; it must be finite wherever the run evaluates it");
+    return value;
+  }
+
+  std::string text;
+  mutable double t = 0.0;
+  mu::Parser parser;
+};
+
+ForceFunction::ForceFunction(const Model& model) : model_(model), harmonic_(model.harmonic) {
+  if (!model.expression.empty()) expression_ = std::make_unique<Expression>(model.expression);
+}
+
+ForceFunction::ForceFunction(const ForceFunction& other)
+    : model_(other.model_), harmonic_(other.harmonic_) {
+  if (other.expression_) expression_ = std::make_unique<Expression>(other.expression_->text);
+}
+
+ForceFunction& ForceFunction::operator=(const ForceFunction& other) {
+  if (this != &other) *this = ForceFunction(other);
+  return *this;
+}
+
+ForceFunction::ForceFunction(ForceFunction&&) noexcept = default;
+ForceFunction& ForceFunction::operator=(ForceFunction&&) noexcept = default;
+ForceFunction::~ForceFunction() = default;
+
+double ForceFunction::at(double t) const {
+  double value = model_.f;
+  if (harmonic_) value += harmonic_->amplitude * std::sin(harmonic_->omega * t + harmonic_->phase);
+  if (expression_) value += (*expression_)(t);
+  return value;
+}
+
+double ForceFunction::integral(double t0, double t1) const {
+  double value = model_.f * (t1 - t0);
+  if (harmonic_) {
+    // cos(a) - cos(b) = 2 sin((a + b)/2) sin((b - a)/2), without cancellation for short steps.
+    const Harmonic& w = *harmonic_;
+    const double mid = w.omega * (t0 + t1) / 2 + w.phase, half = w.omega * (t1 - t0) / 2;
+    value += w.amplitude / w.omega * 2 * std::sin(mid) * std::sin(half);
+  }
+  if (expression_) {
+    gsl_function F{[](double t, void* self) { return (*static_cast<const Expression*>(self))(t); },
+                   expression_.get()};
+    value += gsl_integration_glfixed(&F, t0, t1, &gauss_legendre_16());
+  }
+  return value;
+}
+
+double ForceFunction::step_mean(double t0, double h) const {
+  if (constant()) return model_.f;
+  return integral(t0, t0 + h) / h;
+}
+
+State ForceFunction::flight(const State& s, double t0, double t1) const {
+  if (expression_)
+    throw std::logic_error("ForceFunction::flight: an expression force has no closed form");
+  const double dt = t1 - t0;
+  State next{s.u + dt * (s.v + dt * model_.f / 2), s.v + dt * model_.f};
+  if (harmonic_) {
+    // u'' = a sin(w t + p): v gains (a/w)(cos(w t0 + p) - cos(w t1 + p)) and u gains
+    // (a/w) cos(w t0 + p) dt - (a/w^2)(sin(w t1 + p) - sin(w t0 + p)), the differences written
+    // as products so that a short flight keeps its digits.
+    const Harmonic& w = *harmonic_;
+    const double a0 = w.omega * t0 + w.phase, mid = w.omega * (t0 + t1) / 2 + w.phase,
+                 half = w.omega * dt / 2;
+    const double k = w.amplitude / w.omega;
+    next.v += k * 2 * std::sin(mid) * std::sin(half);
+    next.u += k * (std::cos(a0) * dt - 2 * std::cos(mid) * std::sin(half) / w.omega);
+  }
+  return next;
+}
+
+std::optional<double> ForceFunction::bound() const {
+  if (expression_) return std::nullopt;
+  return std::fabs(model_.f) + (harmonic_ ? std::fabs(harmonic_->amplitude) : 0.0);
+}
+
+}  // namespace impact
