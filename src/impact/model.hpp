@@ -26,7 +26,10 @@ struct Harmonic {
   double amplitude = 0.0;
   double omega = 0.0;  // rad per unit time, > 0
   double phase = 0.0;  // rad
-  bool operator==(const Harmonic&) const = default;
+  // Spelled out rather than defaulted: the Siconos peer includes this header as C++17.
+  bool operator==(const Harmonic& other) const {
+    return amplitude == other.amplitude && omega == other.omega && phase == other.phase;
+  }
 };
 
 // The body force of (2-1): f(t) = f + amplitude sin(omega t + phase) + expression(t), each part
