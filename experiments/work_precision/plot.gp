@@ -3,13 +3,15 @@
 # to figures/):
 #   work_precision.{png,svg}          the main diagram: sup |u_h - u| against CPU time on each
 #                                     scene, and the mechanism of direct's stall
+#   work_precision_forced.{png,svg}   the same on the scenes with a time-dependent force f(t), and
+#                                     the chaotic scene's Lyapunov separation with its horizon
 #   work_precision_<scene>.{png,svg}  every error measure against CPU time (first row), against h
-#                                     (second row, the time-steppers) and, on the scenes penalty
-#                                     runs, against its tolerance (third row)
-# Penalty runs on a fixed grid (h = 1e-3) and sweeps its tolerance, over which its CPU time hardly
-# moves (GSL's driver spends it on the 1e4 output steps): its sweep drawn against CPU time is a
-# vertical streak. So the CPU-time panels show its tightest tolerance only, one point per stepper
-# and c_N, and the third row shows the sweep against the tolerance.
+#                                     (second row, the time-steppers) and, on the scenes penalty or
+#                                     Siconos's LSODAR run, against their tolerance (third row)
+# Penalty and LSODAR run on a fixed grid (h = 1e-3) and sweep their tolerance, over which their
+# CPU time hardly moves (it goes to the 1e4 output steps): such a sweep drawn against CPU time is a
+# vertical streak. So the CPU-time panels show the tightest tolerance only, one point per curve,
+# and the third row shows the sweep against the tolerance.
 # Each panel's y range is that of its data. Errors below 1e-16 (exact, or rounding) are drawn on
 # the bottom axis, labelled "< 10^-16", below the decade of the smallest larger error (by 7% of the
 # axis, at least half a decade; the tics then start at that decade, so no label crowds it).
@@ -22,13 +24,17 @@ set datafile separator ','
 
 file(scene, c) = results.'/curves/'.scene.'.'.c.'.csv'
 is_penalty(c) = strstrt(c, "penalty") == 1
+# A tolerance sweep on the fixed grid: penalty's and Siconos's LSODAR.
+is_tol(c) = is_penalty(c) || c eq "siconos_lsodar"
 col(c) = c eq "direct" ? "#0072B2" : c eq "fb_newton" ? "#56B4E9" : c eq "moreau_jean" ? "#009E73" : \
-         c eq "siconos" ? "#000000" : strstrt(c, "rk8pd") ? "#CC79A7" : "#D55E00"
-dash(c) = c eq "fb_newton" ? 2 : c eq "siconos" ? 3 : is_penalty(c) ? 4 : 1
+         c eq "siconos" ? "#000000" : c eq "siconos_lsodar" ? "#7F7F7F" : \
+         strstrt(c, "rk8pd") ? "#CC79A7" : "#D55E00"
+dash(c) = c eq "fb_newton" ? 2 : c eq "siconos" ? 3 : is_tol(c) ? 4 : 1
 point(c) = c eq "direct" ? 7 : c eq "fb_newton" ? 6 : c eq "moreau_jean" ? 5 : c eq "siconos" ? 4 : \
-           strstrt(c, "1e4") ? 8 : strstrt(c, "1e6") ? 10 : 12
+           c eq "siconos_lsodar" ? 9 : strstrt(c, "1e4") ? 8 : strstrt(c, "1e6") ? 10 : 12
 tit(c) = c eq "direct" ? "direct (5-1)" : c eq "fb_newton" ? "fb\\_newton (5-3)" : \
          c eq "moreau_jean" ? "moreau\\_jean" : c eq "siconos" ? "Siconos MoreauJeanOSI + LCP" : \
+         c eq "siconos_lsodar" ? "Siconos EventDriven + LsodarOSI" : \
          "penalty ".c[9:13]." c_N = ".c[17:]
 
 # The error measures: column in the curve files and axis label.
@@ -39,11 +45,11 @@ mlabel(m) = m eq "sup_u" ? "max_l |u^l - u(t_l)| [m]" : m eq "l1_v" ? "h {/Symbo
 mtitle(m) = m eq "sup_u" ? "sup-norm of u" : m eq "l1_v" ? "L^1 norm of v" : \
             m eq "energy_end" ? "energy at T" : "first impact time"
 
-# What a panel draws: mode 1 against CPU time (every curve; penalty at its tightest tolerance),
-# mode 2 against h (the time-steppers), mode 3 against the tolerance (penalty).
+# What a panel draws: mode 1 against CPU time (every curve; a tolerance sweep at its tightest
+# tolerance), mode 2 against h (the time-steppers), mode 3 against the tolerance (penalty, LSODAR).
 tightest = 2e-11
-drawn(c) = mode == 1 ? 1 : mode == 2 ? !is_penalty(c) : is_penalty(c)
-row_drawn(c) = mode != 1 || !is_penalty(c) || column(2) < tightest
+drawn(c) = mode == 1 ? 1 : mode == 2 ? !is_tol(c) : is_tol(c)
+row_drawn(c) = mode != 1 || !is_tol(c) || column(2) < tightest
 below = 1e-16
 # The y value drawn: NaN for a row not drawn, the bottom axis (zero_at) for an error below 1e-16.
 yvalue(c, v) = row_drawn(c) ? (v < below ? zero_at : v) : NaN
@@ -67,10 +73,10 @@ y_range = "lo = 1e300; hi = 0; zeros = 0; unset logscale; set autoscale xy; \
   if (zeros > 0) { set ytics bottom, 10**ceil(log10(top / bottom) / 8); set ytics add ('< 10^{-16}' zero_at) }"
 # Draws a panel: the curves as lines and points; penalty against CPU time as points alone.
 plot_curves = "plot for [c in value('curves_'.scene)] file(scene, c) skip 1 \
-    using (mode == 1 && is_penalty(c) ? NaN : xvalue(c)):(yvalue(c, column(mc))) with linespoints \
+    using (mode == 1 && is_tol(c) ? NaN : xvalue(c)):(yvalue(c, column(mc))) with linespoints \
     lc rgb col(c) dt dash(c) pt point(c) ps 0.8 lw 1.5 notitle, \
   for [c in value('curves_'.scene)] file(scene, c) skip 1 \
-    using (mode == 1 && is_penalty(c) ? xvalue(c) : NaN):(yvalue(c, column(mc))) with points \
+    using (mode == 1 && is_tol(c) ? xvalue(c) : NaN):(yvalue(c, column(mc))) with points \
     lc rgb col(c) pt point(c) ps 1.2 notitle"
 
 # Panels placed by hand: `row`, `col` in a grid of nrow x ncol over [gx0, gx1] x [gy0, gy1].
@@ -85,14 +91,14 @@ key_strip = "set lmargin at screen gx1 + 0.005; set rmargin at screen 0.995; set
   plot for [c in key_curves] NaN with linespoints lc rgb col(c) dt dash(c) pt point(c) ps 0.8 lw 1.5 title tit(c); \
   set border; set tics; set grid; unset key"
 
-# Every curve of any scene, in the order of the first scene that has it.
+# Every curve of the constant-force scenes, in the order of the first scene that has it.
 all_curves = ""
-do for [scene in scenes] {
+do for [scene in constant_scenes] {
   do for [c in value('curves_'.scene)] {
     if (strstrt(" ".all_curves." ", " ".c." ") == 0) { all_curves = all_curves." ".c }
   }
 }
-penalty_note = "method\n(penalty: on the grid h = 10^{-3} s;\nagainst CPU time one point,\nat its tightest tolerance 10^{-11})\n"
+penalty_note = "method\n(penalty, LSODAR: on the grid h = 10^{-3} s;\nagainst CPU time one point,\nat the tightest tolerance 10^{-11})\n"
 zero_note = "an error below 10^{-16} (exact, or rounding) is drawn on the bottom axis, at < 10^{-16}"
 
 set style data linespoints
@@ -117,7 +123,7 @@ do for [format in "png svg"] {
   set ylabel mlabel("sup_u")
   mode = 1; mc = mcol("sup_u")
   panel = 0
-  do for [scene in scenes] {
+  do for [scene in constant_scenes] {
     panel = panel + 1
     row = 1 + (panel - 1) / 3; col = 1 + (panel - 1) % 3
     @panel_at
@@ -145,9 +151,69 @@ do for [format in "png svg"] {
   @key_strip
   unset multiplot
 
+  # --- the scenes with f(t): sup error against CPU time, and the chaotic scene's horizon ---
+  if (strlen(forced_scenes) > 0) {
+  if (format eq "png") {
+    set terminal pngcairo size 1500,1000 font ",10"
+    set output out.'/work_precision_forced.png'
+  } else {
+    set terminal svg size 1500,1000 font ",10" dynamic
+    set output out.'/work_precision_forced.svg'
+  }
+  set multiplot title "Work against precision with a time-dependent force f(t): sup-norm error of u against CPU time of the solve\n(reference: exact for the vibrating table, event\\_driven for the expression; ".zero_note.")"
+  nrow = 2; ncol = 2; gx0 = 0.07; gx1 = 0.77; gy0 = 0.08; gy1 = 0.88; gapx = 0.08; gapy = 0.12
+  set logscale xy
+  set grid
+  set xlabel "CPU time of the solve [s]"
+  set ylabel mlabel("sup_u")
+  mode = 1; mc = mcol("sup_u")
+  panel = 0
+  do for [scene in forced_scenes] {
+    panel = panel + 1
+    row = 1 + (panel - 1) / 2; col = 1 + (panel - 1) % 2
+    @panel_at
+    set title sprintf("(%c) %s", 96 + panel, value('title_'.scene))
+    @y_range
+    @plot_curves
+  }
+  # (d) two exact runs from the chaotic start, v0 apart by 1e-10: their distance grows as
+  # e^(lambda t); the horizon T of panel (b) is shorter than the Lyapunov time 1 / lambda.
+  row = 2; col = 2
+  @panel_at
+  set title sprintf("(d) chaotic scene: two exact runs 10^{-10} apart in v_0,\n{/Symbol l} = %.2f /s, Lyapunov time 1/{/Symbol l} = %.2f s > T = %g s", lyapunov_lambda, 1 / lyapunov_lambda, lyapunov_T)
+  set xlabel "t [s]"
+  set ylabel "distance in the phase plane sqrt({/Symbol D}u^2 + {/Symbol D}v^2)"
+  unset logscale x
+  set format x "%g"
+  set logscale y
+  set autoscale xy
+  set ytics autofreq
+  set key top left Left reverse font ",9" box opaque
+  set arrow 1 from lyapunov_T, graph 0 to lyapunov_T, graph 1 nohead dt 2 lc rgb "#D55E00"
+  set arrow 2 from 1 / lyapunov_lambda, graph 0 to 1 / lyapunov_lambda, graph 1 nohead dt 3 lc rgb "#000000"
+  plot results.'/lyapunov.csv' skip 1 using 1:($2 > 0 ? $2 : NaN) with lines lw 1 lc rgb "#999999" title "distance", \
+       '' skip 1 using 1:3 with lines lw 2 lc rgb "#0072B2" title "running maximum", \
+       '' skip 1 every ::0::0 using 1:3 with lines lc rgb "#D55E00" dt 2 title "horizon T of the study", \
+       '' skip 1 every ::0::0 using 1:3 with lines lc rgb "#000000" dt 3 title "Lyapunov time 1/{/Symbol l}"
+  unset arrow 1
+  unset arrow 2
+  unset key
+  set format x "10^{%L}"
+  key_curves = ""
+  do for [scene in forced_scenes] {
+    do for [c in value('curves_'.scene)] {
+      if (strstrt(" ".key_curves." ", " ".c." ") == 0) { key_curves = key_curves." ".c }
+    }
+  }
+  key_title = penalty_note
+  @key_strip
+  unset multiplot
+  }
+
   # --- one figure per scene: every measure against CPU time, against h, against the tolerance ---
   do for [scene in scenes] {
-    has_penalty = strstrt(value('curves_'.scene), "penalty") > 0
+    has_penalty = strstrt(value('curves_'.scene), "penalty") > 0 || \
+                  strstrt(value('curves_'.scene), "siconos_lsodar") > 0
     nrow = has_penalty ? 3 : 2; ncol = 4
     if (format eq "png") {
       set terminal pngcairo size 2000, (has_penalty ? 1300 : 900) font ",10"
@@ -156,7 +222,8 @@ do for [format in "png svg"] {
       set terminal svg size 2000, (has_penalty ? 1300 : 900) font ",10" dynamic
       set output out.'/work_precision_'.scene.'.svg'
     }
-    set multiplot title "Work against precision, ".value('title_'.scene)." (T = 10 s)\n".zero_note
+    horizon = strstrt(value('title_'.scene), "T = ") ? "" : " (T = 10 s)"
+    set multiplot title "Work against precision, ".value('title_'.scene).horizon."\n".zero_note
     gx0 = 0.05; gx1 = 0.84; gy0 = has_penalty ? 0.05 : 0.08; gy1 = has_penalty ? 0.9 : 0.86
     gapx = 0.05; gapy = has_penalty ? 0.08 : 0.12
     set logscale xy

@@ -15,10 +15,16 @@ const std::vector<double> kStiffnesses = {1e4, 1e6, 1e8};
 const std::vector<std::string> kOdeSteppers = {"rk8pd", "msbdf"};
 
 Curve peer_curve(Scene scene, const PeerSolver& peer, const std::optional<TimingRule>& rule) {
-  Curve c{peer.name, true, {}};
+  Curve c{peer.name, peer.step_min > 0, {}};
+  if (!c.step_sweep) {
+    scene.grid = Grid::covering(scene.T, kPenaltyGrid);
+    for (const double tolerance : kTolerances)
+      c.points.push_back(peer.measure(scene, tolerance, rule));
+    return c;
+  }
   for (const double h : steps_125(kStepMax, peer.step_min)) {
     scene.grid = Grid::covering(scene.T, h);
-    c.points.push_back(peer.measure(scene, rule));
+    c.points.push_back(peer.measure(scene, 0.0, rule));
   }
   return c;
 }
@@ -84,7 +90,9 @@ std::vector<Curve> measure_curves(const Scene& scene, bool has_cor,
   std::vector<Curve> curves;
   for (const char* method : {"moreau_jean", "fb_newton", "direct"})
     curves.push_back({method, true, step_curve(scene, method, options.timing)});
-  if (options.peer) curves.push_back(peer_curve(scene, *options.peer, options.timing));
+  for (const PeerSolver& peer : options.peers)
+    if (!peer.time_dependent_force_only || !constant_force(scene.model))
+      curves.push_back(peer_curve(scene, peer, options.timing));
   if (!has_cor)
     for (const std::string& stepper : kOdeSteppers)
       for (const double c_N : kStiffnesses)
@@ -119,15 +127,30 @@ double exact_seconds_per_impact(const ExactSolution& exact) {
   return seconds / static_cast<double>(evaluated);
 }
 
+// The reference with f(t) tracking its events alone: one grid step over [0, T], timed, over the
+// number of impacts its event log reports (NaN without one, or without an event log).
+double event_seconds_per_impact(Scene scene, const TimingRule& rule) {
+  scene.grid = Grid{scene.T, 1};
+  const std::int64_t impacts = count_impacts(scene);
+  if (impacts == 0) return std::nan("");
+  const SolveCost solve =
+      time_solve([&] { return make_stepper(scene); }, scene.initial, scene.grid, rule);
+  return solve.min / static_cast<double>(impacts);
+}
+
 }  // namespace
 
 ExactCost exact_cost(Scene scene, const TimingRule& rule) {
-  scene.method = ExactParams{};
+  scene.method = find_method(reference_method(scene.model))->defaults;
   scene.grid = Grid::covering(scene.T, kPenaltyGrid);
   ExactCost cost;
+  cost.method = method_name(scene.method);
   cost.solve = time_solve([&] { return make_stepper(scene); }, scene.initial, scene.grid, rule);
   cost.grid_points = scene.grid.steps;
-  cost.seconds_per_impact = exact_seconds_per_impact(ExactSolution(scene.model, scene.initial));
+  cost.seconds_per_impact =
+      constant_force(scene.model)
+          ? exact_seconds_per_impact(ExactSolution(scene.model, scene.initial))
+          : event_seconds_per_impact(scene, rule);
   return cost;
 }
 

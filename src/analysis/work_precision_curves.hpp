@@ -1,8 +1,11 @@
 // The curves of experiments/work_precision: on the paper's Figure 3 and Figure 4 scenes (without
-// COR and with COR = 0.75) and on a scene whose impact lies on no grid point, every method's
-// error against `exact` and the CPU time of its solve, over a sweep of the step h (direct,
-// fb_newton, moreau_jean, a peer such as Siconos when it is built) or of the tolerance (penalty,
-// c_N = 1e4, 1e6, 1e8, an explicit and an implicit GSL stepper).
+// COR and with COR = 0.75), on a scene whose impact lies on no grid point, and on three scenes with
+// a time-dependent force (the vibrating table in its period-1 and its chaotic regime, an
+// expression force), every method's error against the reference (`exact`, or for an expression
+// force `event_driven`: work_precision_reference.hpp) and the CPU time of its solve, over a sweep
+// of the step h (direct, fb_newton, moreau_jean, a peer such as Siconos's Moreau-Jean when it is
+// built) or of the tolerance (penalty, c_N = 1e4, 1e6, 1e8, an explicit and an implicit GSL
+// stepper; an event-driven peer such as Siconos's LSODAR).
 #pragma once
 
 #include <optional>
@@ -21,6 +24,7 @@ struct WorkPrecisionScene {
   std::string experiment, file;  // experiments/<experiment>/<file>
   std::string title;
   bool has_cor;
+  bool forced = false;  // f depends on t: its reference is reference_method(), not ExactSolution
 };
 const std::vector<WorkPrecisionScene>& work_precision_scenes();
 const WorkPrecisionScene& work_precision_scene(std::string_view name);
@@ -38,20 +42,24 @@ struct Curve {
   std::vector<WorkPrecisionPoint> points;
 };
 
-// Another implementation of moreau_jean's scheme (Siconos's MoreauJeanOSI when it is built),
-// swept over the steps from kStepMax down to step_min: one point per step.
+// A solver from another package (Siconos when it is built): a time-stepper swept over the steps
+// from kStepMax down to step_min, one point per step, or an adaptive solver swept over the
+// tolerances of penalty's sweep on the grid kPenaltyGrid.
 struct PeerSolver {
   std::string name;     // the curve's name, e.g. "siconos"
-  std::string same_as;  // the project's method it implements, e.g. "moreau_jean"
-  double step_min;
-  WorkPrecisionPoint (*measure)(const Scene& scene, const std::optional<TimingRule>& rule);
+  std::string same_as;  // the project's method with the same scheme, e.g. "moreau_jean"; or ""
+  double step_min;      // a step sweep's smallest h; 0 for a tolerance sweep
+  bool time_dependent_force_only;  // run on the scenes whose f depends on t, and no other
+  // One point: the scene (its grid) with this tolerance (a tolerance sweep; 0 for a step sweep).
+  WorkPrecisionPoint (*measure)(const Scene& scene, double tolerance,
+                                const std::optional<TimingRule>& rule);
 };
 
 // What to run; the defaults are the experiment without a peer.
 struct WorkPrecisionOptions {
   // How solves are timed; nullopt: errors only (no CPU times, no timing keys in the summary).
   std::optional<TimingRule> timing = TimingRule{};
-  std::optional<PeerSolver> peer;
+  std::vector<PeerSolver> peers;
 };
 
 // The time-stepper's curve: the scene with the method's default parameters over swept_steps().
@@ -61,7 +69,7 @@ std::vector<WorkPrecisionPoint> step_curve(const Scene& scene, std::string_view 
 Scene penalty_variant(Scene scene, const std::string& stepper, double c_N, double tolerance);
 
 // Every curve of a scene, in drawing order: moreau_jean, fb_newton, direct (on top where their
-// errors coincide), the peer, then penalty's (on a scene without COR: penalty has no COR law).
+// errors coincide), the peers, then penalty's (on a scene without COR: penalty has no COR law).
 std::vector<Curve> measure_curves(const Scene& scene, bool has_cor,
                                   const WorkPrecisionOptions& options);
 
@@ -73,10 +81,13 @@ struct DirectImpactPrediction {
 };
 DirectImpactPrediction predict_direct_impact(double t_impact, double speed, double h);
 
-// `exact`, the reference (error 0 by definition, so no point on the diagrams): the CPU time of a
-// solve sampled on kPenaltyGrid, and of one impact's time and speed from the closed form
-// (averaged over the first 1000 impacts, or as many as there are; NaN without one).
+// The reference (`exact`, or `event_driven` for an expression force; error 0 by definition, so no
+// point on the diagrams): the CPU time of a solve sampled on kPenaltyGrid, and of one impact: for
+// a constant force its time and speed from the closed form (averaged over the first 1000 impacts,
+// or as many as there are), for f(t) a solve over [0, T] in one grid step over its number of
+// impacts; NaN without one.
 struct ExactCost {
+  std::string method;
   SolveCost solve;
   std::int64_t grid_points = 0;
   double seconds_per_impact = 0;

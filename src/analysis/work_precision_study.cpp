@@ -6,6 +6,7 @@
 #include <string>
 
 #include "analysis/markdown.hpp"
+#include "analysis/work_precision_lyapunov.hpp"
 #include "analysis/work_precision_report.hpp"
 #include "impact/exact.hpp"
 #include "impact/output.hpp"
@@ -15,6 +16,21 @@ namespace {
 
 // The scene whose `direct` curve shows why direct without COR does not converge.
 constexpr std::string_view kMechanismScene = "offgrid_no_cor";
+// The chaotic scene, whose horizon T is checked against its Lyapunov time, measured over
+// kLyapunovHorizon on the grid kLyapunovStep.
+constexpr std::string_view kChaoticScene = "table_chaotic";
+constexpr double kLyapunovHorizon = 20.0, kLyapunovStep = 1e-3;
+
+// lyapunov.csv and the summary's [<scene>.lyapunov].
+toml::table lyapunov_summary(const ExperimentContext& context, const Scene& scene) {
+  const LyapunovEstimate estimate = estimate_lyapunov(scene, kLyapunovHorizon, kLyapunovStep);
+  context.write("lyapunov.csv", [&] { return lyapunov_csv(estimate); });
+  return toml::table{{"lambda", estimate.lambda},
+                     {"lyapunov_time", estimate.lyapunov_time},
+                     {"horizon_T", scene.T},
+                     {"fitted_until", estimate.fitted_until},
+                     {"delta0", estimate.delta0}};
+}
 
 std::string point_columns(const WorkPrecisionPoint& p) {
   return round_trip(p.h) + "," + round_trip(p.tolerance);
@@ -80,7 +96,7 @@ std::string exact_row(const WorkPrecisionScene& spec, const ExactCost& cost,
   scene_summary.insert("exact", toml::table{{"solve_seconds", cost.solve.min},
                                             {"ns_per_grid_point", per_point},
                                             {"ns_per_impact", cost.seconds_per_impact * 1e9}});
-  return "| " + spec.name + " | " + short_number(cost.solve.min) + " s | " +
+  return "| " + spec.name + " | " + cost.method + " | " + short_number(cost.solve.min) + " s | " +
          short_number(per_point) + " ns | " + short_number(cost.seconds_per_impact * 1e9) +
          " ns |\n";
 }
@@ -112,10 +128,10 @@ struct Outputs {
   std::string points =
       "scene,curve,h,tolerance,steps,sup_u,l1_v,energy_end,first_impact,"
       "cost_min,cost_median,repetitions,batch\n";
-  std::string curves_gp, scene_names, orders = orders_table_head();
+  std::string curves_gp, constant_scene_names, forced_scene_names, orders = orders_table_head();
   std::string exact_table =
-      "\n| scene | exact: CPU time of a solve sampled at h = 1e-3 | per grid point | per "
-      "impact |\n| --- | --- | --- | --- |\n";
+      "\n| scene | reference | CPU time of a solve sampled at h = 1e-3 | per grid point | per "
+      "impact |\n| --- | --- | --- | --- | --- |\n";
 };
 
 toml::table run_scene(const ExperimentContext& context, const WorkPrecisionScene& spec,
@@ -132,14 +148,22 @@ toml::table run_scene(const ExperimentContext& context, const WorkPrecisionScene
     scene_summary.insert(c.name, std::move(report.entry));
     names += (names.empty() ? "" : " ") + c.name;
   }
-  if (options.peer)
-    scene_summary.insert(options.peer->name + "_vs_" + options.peer->same_as,
-                         peer_comparison(curves, *options.peer, options.timing.has_value()));
+  for (const PeerSolver& peer : options.peers)
+    if (!peer.same_as.empty())
+      scene_summary.insert(peer.name + "_vs_" + peer.same_as,
+                           peer_comparison(curves, peer, options.timing.has_value()));
   if (options.timing)
     out.exact_table += exact_row(spec, exact_cost(scene, *options.timing), scene_summary);
   out.curves_gp += "curves_" + spec.name + " = \"" + names + "\"\n" + "title_" + spec.name +
                    " = \"" + spec.title + "\"\n";
-  out.scene_names += (out.scene_names.empty() ? "" : " ") + spec.name;
+  std::string& names_of_kind = spec.forced ? out.forced_scene_names : out.constant_scene_names;
+  names_of_kind += (names_of_kind.empty() ? "" : " ") + spec.name;
+  if (spec.name == kChaoticScene) {
+    toml::table lyapunov = lyapunov_summary(context, scene);
+    out.curves_gp += "lyapunov_lambda = " + round_trip(*lyapunov["lambda"].value<double>()) +
+                     "\nlyapunov_T = " + round_trip(scene.T) + "\n";
+    scene_summary.insert("lyapunov", std::move(lyapunov));
+  }
   if (spec.name == kMechanismScene)
     summary.insert("direct_offgrid_mechanism",
                    direct_mechanism(context, scene,
@@ -164,11 +188,14 @@ toml::table run_work_precision(const ExperimentContext& context,
   for (const WorkPrecisionScene& spec : work_precision_scenes())
     summary.insert(spec.name, run_scene(context, spec, options, out, summary));
   context.write("points.csv", [&] { return out.points; });
-  context.write("curves.gp",
-                [&] { return out.curves_gp + "scenes = \"" + out.scene_names + "\"\n"; });
+  context.write("curves.gp", [&] {
+    return out.curves_gp + "constant_scenes = \"" + out.constant_scene_names +
+           "\"\nforced_scenes = \"" + out.forced_scene_names +
+           "\"\nscenes = constant_scenes.\" \".forced_scenes\n";
+  });
   context.write("orders.md",
                 [&] { return out.orders + (options.timing ? out.exact_table : std::string()); });
-  summary.insert("siconos", options.peer.has_value());
+  summary.insert("siconos", !options.peers.empty());
   if (options.timing) summary.insert("sweep_cpu_seconds", cpu_seconds() - started);
   return summary;
 }
@@ -182,7 +209,7 @@ ReferenceRule work_precision_reference_rule() {
   ReferenceRule rule;
   rule.skip = {"sweep_cpu_seconds", "siconos"};
   for (const WorkPrecisionScene& s : work_precision_scenes()) {
-    for (const char* table : {".exact", ".siconos", ".siconos_vs_moreau_jean"})
+    for (const char* table : {".exact", ".siconos", ".siconos_vs_moreau_jean", ".siconos_lsodar"})
       rule.skip.push_back(s.name + table);  // a whole table
     for (const char* curve : {"direct", "fb_newton", "moreau_jean"})
       for (const char* target : {"0.001", "1e-06"})

@@ -1,0 +1,72 @@
+#include "analysis/work_precision_reference.hpp"
+
+#include <stdexcept>
+#include <string>
+#include <variant>
+
+#include "impact/force.hpp"
+
+namespace impact {
+
+std::string_view reference_method(const Model& model) {
+  return model.expression.empty() ? "exact" : "event_driven";
+}
+
+bool attach_event_sink(AnyStepper& stepper, EventSink sink) {
+  return std::visit(
+      [&](auto& s) {
+        if constexpr (requires { s.set_event_sink(std::move(sink)); }) {
+          s.set_event_sink(std::move(sink));
+          return true;
+        }
+        return false;
+      },
+      stepper);
+}
+
+std::int64_t count_impacts(const Scene& scene) {
+  std::int64_t impacts = 0;
+  AnyStepper stepper = make_stepper(scene);
+  attach_event_sink(stepper, [&](const Event& e) { impacts += e.kind == EventKind::impact; });
+  simulate(stepper, scene.initial, scene.grid, [](std::int64_t, const State&, const StepInfo&) {});
+  return impacts;
+}
+
+ReferenceTrajectory reference_trajectory(const Model& model, const State& initial,
+                                         const Grid& grid) {
+  const std::string_view name = reference_method(model);
+  const MethodInfo* info = find_method(name);
+  if (!info)
+    throw std::runtime_error("the reference of a time-dependent force is method " +
+                             std::string(name) + ", which this build does not have");
+  AnyStepper stepper = make_stepper(model, grid.h, info->defaults);
+  ReferenceTrajectory reference;
+  reference.states.reserve(static_cast<std::size_t>(grid.steps) + 1);
+  attach_event_sink(stepper, [&reference](const Event& event) {
+    if (event.kind == EventKind::impact && !reference.first_impact)
+      reference.first_impact = event.t;
+  });
+  simulate(stepper, initial, grid, [&reference](std::int64_t, const State& s, const StepInfo&) {
+    reference.states.push_back(s);
+  });
+  return reference;
+}
+
+ReferenceErrorObserver::ReferenceErrorObserver(const Model& model,
+                                               const ReferenceTrajectory& reference,
+                                               const Grid& grid)
+    : model_(model),
+      reference_(&reference),
+      grid_(grid),
+      f_end_(ForceFunction(model).at(grid.end())) {}
+
+ErrorNorms ReferenceErrorObserver::result(const RunSummary& run) const {
+  // E(T) = v^2/2 - f(T) u of the method and of the reference, both at the last grid time.
+  const auto energy_at_end = [&](const State& s) { return 0.5 * s.v * s.v - f_end_ * s.u; };
+  ErrorNorms e = e_;
+  e.energy_end = std::fabs(energy_at_end(previous_) - energy_at_end(reference_->states.back()));
+  e.run = run;
+  return e;
+}
+
+}  // namespace impact
