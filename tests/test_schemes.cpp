@@ -12,6 +12,7 @@
 #include "impact/registry.hpp"
 #include "impact/run.hpp"
 #include "scene/read_scene.hpp"
+#include "trajectory_support.hpp"
 
 using namespace impact;
 
@@ -19,20 +20,8 @@ namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
-struct Row {
-  State s;
-  StepInfo info;
-};
-
-template <class Stepper>
-std::vector<Row> trajectory(Stepper&& stepper, const State& initial, const Grid& grid) {
-  std::vector<Row> rows;
-  rows.reserve(static_cast<std::size_t>(grid.steps) + 1);
-  simulate(stepper, initial, grid, [&](std::int64_t, const State& s, const StepInfo& info) {
-    rows.push_back({s, info});
-  });
-  return rows;
-}
+using testing::Row;
+using testing::trajectory;
 
 std::vector<Row> trajectory(const Scene& scene) {
   AnyStepper stepper = make_stepper(scene);

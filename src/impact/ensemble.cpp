@@ -6,8 +6,9 @@
 #include <string>
 
 // FMA stays off in the vector code: one rounding for a * b + c would make the lanes differ from the
-// single-particle solver, which the baseline x86-64 build never contracts. GCC takes it per function
-// (IMPACT_NO_CONTRACT); clang decides it where the expression is written: its pragma comes first.
+// single-particle solver, which the baseline x86-64 build never contracts. GCC takes it per
+// function (IMPACT_NO_CONTRACT); clang decides it where the expression is written: its pragma comes
+// first.
 #if defined(__clang__)
 #pragma clang fp contract(off)
 #define IMPACT_NO_CONTRACT
@@ -308,6 +309,9 @@ Ensemble::Ensemble(EnsembleMethod method, std::span<const Model> models,
   since_.setZero(padded_);
   for (Eigen::Index i = 0; i < size_; ++i) {
     const Model& m = models[static_cast<std::size_t>(i)];
+    if (!constant_force(m))  // the kernels take one constant f per particle
+      throw std::invalid_argument("Ensemble: particle " + std::to_string(i) +
+                                  " has a time-dependent body force; only a constant f is stepped");
     if (m.cor && !(*m.cor >= 0 && *m.cor <= 1))
       throw std::invalid_argument("Ensemble: particle " + std::to_string(i) + ": COR " +
                                   std::to_string(*m.cor) + " is outside [0, 1]");

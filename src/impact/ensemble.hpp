@@ -32,7 +32,8 @@ class Ensemble {
 
   // Particle i has models[i] and starts from initial[i] at t = 0; all share the step h (and, for
   // moreau_jean, theta, as in MoreauJeanParams). Throws std::invalid_argument when the sizes
-  // differ, h is not positive and finite, theta is outside [0, 1] or a COR outside [0, 1].
+  // differ, h is not positive and finite, theta is outside [0, 1], a COR outside [0, 1] or a
+  // body force is not constant (constant_force of model.hpp).
   Ensemble(EnsembleMethod method, std::span<const Model> models, std::span<const State> initial,
            double h, double theta = 0.5);
 

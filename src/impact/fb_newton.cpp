@@ -35,7 +35,8 @@ void FbNewton::initialize(const State& s, std::int64_t l) {
 }
 
 // Newton on S(x) = F_eps(x, N(x)) with x = u^{l+1} - phi (the gap) and
-// N(x) = (2/h)((x - g^l)/h - v^l) - f = k (x - x_free), k = 2/h^2, x_free = g^l + h v^l + h^2 f / 2
+// N(x) = (2/h)((x - g^l)/h - v^l) - f^l = k (x - x_free), k = 2/h^2,
+// x_free = g^l + h v^l + h^2 f^l / 2
 // (the gap without contact force).
 //
 // Gap coordinates: the step works on g = u - phi and carries g from step to step, adding phi only
@@ -76,8 +77,9 @@ StepInfo FbNewton::do_step(State& s, std::int64_t l) {
   const double phi = model_.phi, h = h_, eps = params_.epsilon;
   const double k = 2 / (h * h);
   const bool paper = params_.free_flight == FreeFlightForm::paper;
-  // x_free = g^l + h v^l + h^2 f/2 (free_flight.hpp)
-  const State free = paper ? paper_free_step(gap_, model_.f, h) : flight_.predict(l);
+  // x_free = g^l + h v^l + h^2 f^l/2, f^l the step's discrete force (scheme_flight.hpp)
+  State free = flight_.step(l);
+  if (paper) free = paper_free_step(gap_, flight_.step_force(), h);
   const double x_free = free.u;
   double x = std::fmax(x_free, 0.0);
   StepInfo info;

@@ -9,6 +9,7 @@
 
 #include "impact/free_flight.hpp"
 #include "impact/model.hpp"
+#include "impact/scheme_flight.hpp"
 
 namespace impact {
 
@@ -27,7 +28,7 @@ class FbNewton {
         h_(h),
         params_(params),
         sqrt_eps_(std::sqrt(params.epsilon)),
-        flight_(model.f, h) {}
+        flight_(model, h) {}
 
   // Works in gap coordinates (u - phi, v) from here on, see do_step.
   void initialize(const State& s, std::int64_t l);
@@ -40,8 +41,8 @@ class FbNewton {
   Model model_;
   double h_;
   FbNewtonParams params_;
-  double sqrt_eps_;    // the velocity scale of the smoothing, see step()
-  FreeFlight flight_;  // in gap coordinates (u - phi, v), see do_step()
+  double sqrt_eps_;      // the velocity scale of the smoothing, see step()
+  SchemeFlight flight_;  // in gap coordinates (u - phi, v), see do_step()
   // The state at t_l in gap coordinates as the last step computed it (the caller's u is
   // phi + gap, rounded).
   State gap_;

@@ -5,13 +5,13 @@
 // recovering v from (4-2), 2 (u^{l+1} - u^l)/h - v^l, multiplies the rounding of u by 2/h. So
 // `direct` and `fb_newton` evaluate the same discrete solution from the last contact in closed
 // form: u = u_a + s (v_a + s f/2), v = v_a + s f, s = (l + 1 - l_a) h.
+// For a time-dependent force, scheme_flight.hpp adds the varying part to it.
 // free_flight() is that formula, a template over the lane type so that the ensemble
 // (ensemble.hpp), which steps a vector of particles at once, does the same operations in the same
 // order as the single-particle solvers and so gets bit-identical results.
 #pragma once
 
 #include <cmath>
-#include <cstdint>
 
 #include "impact/model.hpp"
 
@@ -46,31 +46,5 @@ void free_flight(const Real& u_a, const Real& v_a, const Real& t, const Scalar& 
   u = u_a + t * (v_a + t * f / 2);
   v = v_a + t * f;
 }
-
-// The closed-form free flight of a stepper that steps one particle (fb_newton): anchored where the
-// last contact ended, or where the run started.
-class FreeFlight {
- public:
-  FreeFlight(double f, double h) : f_(f), h_(h) {}
-
-  // A free flight starts at (t_l, s).
-  void start(std::int64_t l, const State& s) {
-    anchor_l_ = l;
-    anchor_ = s;
-  }
-
-  // The state at t_{l+1} if no contact force has acted since the anchor.
-  State predict(std::int64_t l) const {
-    const double t = static_cast<double>(l + 1 - anchor_l_) * h_;
-    State next;
-    free_flight(anchor_.u, anchor_.v, t, f_, next.u, next.v);
-    return next;
-  }
-
- private:
-  double f_, h_;
-  std::int64_t anchor_l_ = 0;
-  State anchor_;
-};
 
 }  // namespace impact

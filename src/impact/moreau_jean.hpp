@@ -1,6 +1,6 @@
 // Moreau-Jean time-stepping (velocity level, theta-method, Newton's impact law), as in Siconos's
 // MoreauJeanOSI with a one-contact LCP, for comparison with the paper's position-level scheme:
-//   v^{l+1} = v^l + h f + P^{l+1},  u^{l+1} = u^l + h (theta v^{l+1} + (1 - theta) v^l),
+//   v^{l+1} = v^l + h f^l + P^{l+1},  u^{l+1} = u^l + h (theta v^{l+1} + (1 - theta) v^l),
 //   if the contact is active (u^l - phi + gamma h v^l <= 0, gamma = 1/2):
 //     0 <= v^{l+1} + e v^l  ⟂  P^{l+1} >= 0,
 // with e = COR, or e = 1 when the scene gives none (the elastic limit of the exact reference).
@@ -10,19 +10,20 @@
 #include <cstdint>
 
 #include "impact/model.hpp"
+#include "impact/scheme_flight.hpp"
 
 namespace impact {
 
 // One step of Moreau-Jean for one particle (Real = double) or a vector of particles (the ensemble,
-// ensemble.hpp): the same operations in the same order for both, the branches taken as
-// selections, so that each lane of the ensemble is bit-identical to the single-particle solver.
+// ensemble.hpp), from v_free = v^l + h f^l (the velocity without contact impulse): the same
+// operations in the same order for both, the branches taken as selections, so that each lane of
+// the ensemble is bit-identical to the single-particle solver.
 // The position is the gap g = u - phi: far from the origin (phi = 1e9) the increments h v of u
 // fall below the floor's ulp and u would freeze while v grows; the gap keeps them.
 // e is the COR (1 without one); contact_force is set to P^{l+1} / h.
 template <class Real>
-void moreau_jean_step(Real& gap, Real& v, Real& contact_force, const Real& f, const Real& e,
-                      double theta, double h) {
-  const Real v_free = v + h * f;
+void moreau_jean_update(Real& gap, Real& v, Real& contact_force, const Real& v_free, const Real& e,
+                        double theta, double h) {
   // The contact is active when u^l - phi + gamma h v^l <= 0; then the one-contact LCP in closed
   // form: the smallest impulse that makes v^{l+1} >= -e v^l. `bound` is -e v^l where the contact
   // is active and v_free (so no impulse) elsewhere: a selection feeding a comparison, because
@@ -37,21 +38,49 @@ void moreau_jean_step(Real& gap, Real& v, Real& contact_force, const Real& f, co
   contact_force = impulse / h;
 }
 
+// The step under a constant force f.
+template <class Real>
+void moreau_jean_step(Real& gap, Real& v, Real& contact_force, const Real& f, const Real& e,
+                      double theta, double h) {
+  moreau_jean_update(gap, v, contact_force, Real(v + h * f), e, theta, h);
+}
+
 struct MoreauJeanParams {
   double theta = 0.5;
   bool operator==(const MoreauJeanParams&) const = default;
 };
 
+// With a time-dependent force the step's impulse of f is its integral over the step,
+// h f^l = int_{t_l}^{t_{l+1}} f (the step mean of scheme_flight.hpp, as direct uses): the impulse
+// identity h sum N^l = v^n - v^0 - int_0^T f then holds to rounding as for a constant force, the
+// free-flight velocity is exact at the grid times, and with theta = 1/2 the position is its
+// trapezoidal rule, second order (Siconos's MoreauJeanOSI weights f(t_l), f(t_{l+1}) by theta
+// instead, which is second order too but keeps neither).
 class MoreauJean {
  public:
   MoreauJean(const Model& model, double h, const MoreauJeanParams& params)
-      : phi_(model.phi), f_(model.f), h_(h), theta_(params.theta), e_(model.cor.value_or(1.0)) {}
+      : phi_(model.phi),
+        f_(model.f),
+        h_(h),
+        theta_(params.theta),
+        e_(model.cor.value_or(1.0)),
+        force_(model, h),
+        constant_(force_.constant()) {}
 
-  void initialize(const State& s, std::int64_t) { state_ = {s.u - phi_, s.v}; }
+  void initialize(const State& s, std::int64_t l) {
+    state_ = {s.u - phi_, s.v};
+    force_.seek(l);
+  }
 
-  StepInfo do_step(State& s, std::int64_t) {
+  StepInfo do_step(State& s, std::int64_t l) {
     StepInfo info;
-    moreau_jean_step(state_.u, state_.v, info.contact_force, f_, e_, theta_, h_);
+    if (constant_) {
+      moreau_jean_step(state_.u, state_.v, info.contact_force, f_, e_, theta_, h_);
+    } else {
+      const SchemeForce::Impulse impulse = force_.advance(l);
+      const double v_free = state_.v + h_ * f_ + (impulse.harmonic + impulse.expression);
+      moreau_jean_update(state_.u, state_.v, info.contact_force, v_free, e_, theta_, h_);
+    }
     s = {phi_ + state_.u, state_.v};
     return info;
   }
@@ -62,6 +91,8 @@ class MoreauJean {
   double theta_;
   double e_;
   State state_;  // (u - phi, v) at t_l
+  SchemeForce force_;
+  bool constant_;
 };
 
 }  // namespace impact

@@ -11,10 +11,13 @@
 #include <limits>
 #include <new>
 #include <numbers>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 #include <string_view>
 
+#include "impact/force.hpp"
 #include "impact/gsl_errors.hpp"
 
 namespace impact {
@@ -91,11 +94,12 @@ struct DriverFree {
 
 // The ODE is integrated in the gap g = u - phi rather than u, so that rtol measures the penetration
 // and not the floor's distance from the origin: y = (g, v, P) with
-//   g' = v,  v' = f + N,  P' = N,  N = c_N max(-g, 0),
+//   g' = v,  v' = f(t) + N,  P' = N,  N = c_N max(-g, 0),
 // where P, the impulse delivered since the last reset, gives N^l = (P(t_{l+1}) - P(t_l)) / h, the
 // meaning of N^l in (4-1) (model.hpp). v - P - f t is a linear invariant, which every Runge-Kutta
 // and linear multistep method keeps up to rounding, so h sum N^l = v^n - v^0 - f T holds to
-// rounding whatever the tolerances.
+// rounding whatever the tolerances (with f(t): v - P - int_0^t f, as long as the stepper
+// integrates f(t) to its tolerance).
 //
 // The Impl lives on the heap and is never moved: gsl_odeiv2_system::params points to it and the
 // driver points to `sys`, so moving a Penalty (its unique_ptr) keeps both pointers valid.
@@ -106,8 +110,15 @@ struct Penalty::Impl {
 
   static int rhs(double t, const double y[], double dydt[], void* self);
   static int jacobian(double t, const double y[], double* dfdy, double dfdt[], void* self);
+  double force_at(double t);
+  double floor_time(double t, double g, double v);
+  double exit_time(double t, double g, double v);
 
   double f;
+  ForceFunction force;  // f(t)
+  bool constant;        // f(t) = f
+  // The first failure of an expression force (its message), which ends the run.
+  std::string force_error;
   double phi;
   double h;
   double c_N;
@@ -132,7 +143,12 @@ struct Penalty::Impl {
 };
 
 Penalty::Impl::Impl(const Model& model, double grid_h, const PenaltyParams& params)
-    : f(model.f), phi(model.phi), h(grid_h), c_N(params.stiffness) {
+    : f(model.f),
+      force(model),
+      constant(force.constant()),
+      phi(model.phi),
+      h(grid_h),
+      c_N(params.stiffness) {
   if (!(h > 0.0) || !std::isfinite(h)) throw std::invalid_argument("Penalty: h must be > 0");
   if (!(c_N > 0.0) || !std::isfinite(c_N))
     throw std::invalid_argument("Penalty: stiffness c_N must be > 0 and finite");
@@ -158,22 +174,53 @@ Penalty::Impl::Impl(const Model& model, double grid_h, const PenaltyParams& para
   gsl_odeiv2_driver_set_nmax(driver.get(), kMaxOdeSteps);
 }
 
-int Penalty::Impl::rhs(double, const double y[], double dydt[], void* self) {
-  const Impl& m = *static_cast<const Impl*>(self);
+// f(t); an expression that is not finite where the stepper evaluates it records its message.
+double Penalty::Impl::force_at(double t) {
+  if (constant) return f;
+  try {
+    return force.at(t);
+  } catch (const std::runtime_error& e) {
+    if (force_error.empty()) force_error = e.what();
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+}
+
+int Penalty::Impl::rhs(double t, const double y[], double dydt[], void* self) {
+  Impl& m = *static_cast<Impl*>(self);
   // A non-finite stage (a step so large it overflowed) is a recoverable failure: GSL retries with
   // a smaller step. (The error control would let it through: GSL's max ignores NaN.)
   if (!std::isfinite(y[0]) || !std::isfinite(y[1])) return GSL_FAILURE;
+  const double force = m.force_at(t);
+  if (!m.force_error.empty()) return GSL_EBADFUNC;  // GSL stops at once
   const double N = m.c_N * std::fmax(-y[0], 0.0);
   dydt[0] = y[1];
-  dydt[1] = m.f + N;
+  dydt[1] = force + N;
   dydt[2] = N;
   return GSL_SUCCESS;
 }
 
+// When the piece that starts at (t, g, v) ends: the particle reaches the floor (flying) or leaves
+// it (in contact). For a constant force these are exact (time_to_floor, time_to_exit). For f(t),
+// the floor is not reached before the first root of g + v tau - B tau^2 / 2 with B = sup |f|
+// (ForceFunction::bound), so pieces that end there approach it from the free side, each leaving a
+// gap O(tau^2) of the last (an expression has no bound: the force at t is frozen instead); the
+// exit is estimated with f frozen at t, and a piece that ends early is followed by another.
+double Penalty::Impl::floor_time(double t, double g, double v) {
+  if (constant) return time_to_floor(g, v, f);
+  const std::optional<double> bound = force.bound();
+  return time_to_floor(g, v, bound ? -*bound : force_at(t));
+}
+
+double Penalty::Impl::exit_time(double t, double g, double v) {
+  return time_to_exit(g, v, constant ? f : force_at(t), w);
+}
+
 // The exact Jacobian (msbdf and the implicit Runge-Kutta steppers need it): dN/dg = -c_N in
 // contact, 0 off it; at g = 0 exactly, the one-sided derivative of the piece being integrated.
-int Penalty::Impl::jacobian(double, const double y[], double* dfdy, double dfdt[], void* self) {
-  const Impl& m = *static_cast<const Impl*>(self);
+// df/dt by a central difference (step cbrt(eps) max(1, |t|): error O(eps^(2/3)) relative, enough
+// for the Newton iterations of an implicit stepper).
+int Penalty::Impl::jacobian(double t, const double y[], double* dfdy, double dfdt[], void* self) {
+  Impl& m = *static_cast<Impl*>(self);
   const bool contact = y[0] < 0.0 || (y[0] == 0.0 && m.contact_piece);
   const double dN = contact ? -m.c_N : 0.0;
   const double J[9] = {0.0, 1.0, 0.0,   // g' = v
@@ -181,6 +228,11 @@ int Penalty::Impl::jacobian(double, const double y[], double* dfdy, double dfdt[
                        dN,  0.0, 0.0};  // P' = N
   std::copy(J, J + 9, dfdy);
   std::fill(dfdt, dfdt + 3, 0.0);
+  if (!m.constant) {
+    const double d = 6.055454452393343e-06 * std::fmax(1.0, std::fabs(t));  // cbrt(eps)
+    dfdt[1] = (m.force_at(t + d) - m.force_at(t - d)) / (2 * d);
+    if (!m.force_error.empty()) return GSL_EBADFUNC;
+  }
   return GSL_SUCCESS;
 }
 
@@ -219,6 +271,7 @@ void Penalty::initialize(const State& s, std::int64_t l) {
   Impl& m = *impl_;
   gsl_odeiv2_driver_reset(m.driver.get());
   m.y = {s.u - m.phi, s.v, 0.0};
+  m.force_error.clear();
   m.run_steps = 0;
   m.l0 = l;
 }
@@ -247,10 +300,10 @@ StepInfo Penalty::do_step(State& s, std::int64_t l) {
   while (t < t_end) {
     const double g = m.y[0], v = m.y[1];
     bool flying = g > 0.0 || (g == 0.0 && v > 0.0);
-    double tau = flying ? time_to_floor(g, v, m.f) : time_to_exit(g, v, m.f, m.w);
+    double tau = flying ? m.floor_time(t, g, v) : m.exit_time(t, g, v);
     if (tau < m.tiny) {  // at a kink already (up to rounding): the next piece is the other phase
       flying = !flying;
-      tau = flying ? time_to_floor(0.0, v, m.f) : time_to_exit(0.0, v, m.f, m.w);
+      tau = flying ? m.floor_time(t, 0.0, v) : m.exit_time(t, 0.0, v);
     }
     m.contact_piece = !flying;
     const bool to_kink = tau < t_end - t;
@@ -290,7 +343,9 @@ std::string Penalty::failure_reason() const {
   std::ostringstream msg;
   msg.precision(3);
   msg << "GSL odeiv2 stepper " << m.stepper_name << " ";
-  if (m.out_of_budget)
+  if (!m.force_error.empty())
+    msg << "stopped: " << m.force_error;
+  else if (m.out_of_budget)
     msg << "used up the run's budget of ODE steps (" << m.run_steps
         << " since the start; method.max_ode_steps, automatic: " << kMaxOdeSteps << " + "
         << kAutomaticStepsPerGridStep << " per grid step)";

@@ -8,7 +8,7 @@ PointSummary finish_summary(const SummaryLanes<double>& lanes, const Model& mode
                             const State& final, std::int64_t iterations) {
   PointSummary p;
   p.final = final;
-  p.energy_final = energy(model, final);
+  if (constant_force(model)) p.energy_final = energy(model, final);
   p.contact_steps = static_cast<std::int64_t>(lanes.contacts.steps);
   p.impacts = impacts(lanes.contacts);
   if (lanes.contacts.episodes > 0) {
@@ -38,6 +38,7 @@ PointOutcome summarize(const Scene& scene, bool against_exact) {
 }
 
 std::optional<EnsembleKind> ensemble_kind(const Scene& scene) {
+  if (!constant_force(scene.model)) return std::nullopt;  // the ensemble takes a constant f only
   if (const auto* direct = std::get_if<DirectParams>(&scene.method))
     if (direct->free_flight == FreeFlightForm::closed_form)
       return EnsembleKind{EnsembleMethod::direct, 0.5};

@@ -19,8 +19,10 @@
 namespace impact {
 
 struct PointSummary {
-  State final;              // u^n, v^n at T
-  double energy_final = 0;  // E^n (3-1)
+  State final;  // u^n, v^n at T
+  // E^n (3-1), v^2/2 - f u, defined for a constant force; NaN for a time-dependent one, which
+  // conserves no such energy between impacts.
+  double energy_final = std::numeric_limits<double>::quiet_NaN();
   std::int64_t contact_steps = 0;
   std::int64_t impacts = 0;  // contact episodes before rest (all of them without rest)
   // t_l + floor_crossing(u^l, v^l) for the first contact step l; NaN without contact.
@@ -71,7 +73,7 @@ struct PointOutcome {
 PointOutcome summarize(const Scene& scene, bool against_exact);
 
 // The ensemble kernel that steps the scene's method bit-identically, if there is one: direct with
-// its closed-form free flight, and moreau_jean.
+// its closed-form free flight, and moreau_jean, under a constant force.
 struct EnsembleKind {
   EnsembleMethod method;
   double theta;  // moreau_jean's; 0.5 (unused) for direct
