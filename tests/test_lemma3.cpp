@@ -141,7 +141,12 @@ TEST_CASE("Lemma 3 numbers match experiments/lemma3/reference.toml", "[lemma3][r
   // rise goes beyond the tolerance).
   ReferenceRule rule;
   rule.skip = {"lemma3.energy_inequality.increases",
-               "lemma3.energy_inequality.max_increase_over_tolerance"};
+               "lemma3.energy_inequality.max_increase_over_tolerance",
+               // The same with f(t): the steps where E^l rises beyond its round-off include rises
+               // of the size of the tolerance, whose count a rounding can change by one; and the
+               // largest rise of W over its tolerance (test_lemma3_forcing checks it is below 1).
+               "lemma3_forcing.energy.energy_rises",
+               "lemma3_forcing.energy.work_energy_max_rise_over_tolerance"};
   for (const std::string& difference : compare_with_reference(measured, reference, rule))
     FAIL_CHECK(difference);
   // The ratios go down to 1e-9, where that rule would accept any value: they are quotients of

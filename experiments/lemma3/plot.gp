@@ -64,3 +64,84 @@ do for [format in "png svg"] {
        1 with lines lc rgb "black" lw 1.5 dt 2 title "tolerance"
   unset multiplot
 }
+
+# Lemma 3 with f(t) = f + a sin(omega t + phase): measured / bound for every run of the forcing
+# sweep (results/lemma3/forcing_runs.csv, src/analysis/lemma3_forcing.hpp), one column per reading
+# of |f|, the runs spread across each column in sweep order; direct and fb_newton in two colours.
+forcing = results.'/forcing_runs.csv'
+set autoscale
+unset logscale
+stats forcing using 1 nooutput
+runs = STATS_max
+readings = "sup mean rms sup_f0 mean_f0 rms_f0 constant frozen"
+spread(k) = k + 0.7 * ($1 / runs - 0.5)
+is_direct(y) = strcol(2) eq "direct" ? y : NaN
+is_newton(y) = strcol(2) eq "fb_newton" ? y : NaN
+do for [format in "png svg"] {
+  if (format eq "png") {
+    set terminal pngcairo size 1200,900 font ",10"
+    set output 'figures/lemma3_forcing.png'
+  } else {
+    set terminal svg size 1200,900 font ",10" dynamic
+    set output 'figures/lemma3_forcing.svg'
+  }
+  set multiplot layout 2,2 title sprintf("Lemma 3 with f(t) = f + a sin(omega t + phase): %d runs (direct, fb\\_newton; T = 2 s)", runs)
+  set grid
+  unset arrow
+  set logscale y 10
+  set format y "10^{%L}"
+  set key top left box opaque
+  set xrange [0.4:9.6]
+  set xtics rotate by 30 right ("sup" 1, "mean" 2, "rms" 3, "sup, f(0)" 4, "mean, f(0)" 5, \
+             "rms, f(0)" 6, "constant f" 7, "frozen f(t_l)" 8, "proof P" 9)
+  set xlabel "reading of |f| in the bound (E^0 from +-F, or from f(0))"
+
+  set yrange [1e-40:1e3]
+  set ylabel "max_l |v^l| / bound"
+  set title "(a) velocity: V = sqrt((2E^0 + 2F|u^0| + FT)(1 + FT e^{FT})); P = |v^0| + int_0^T |f|"
+  plot for [k=1:8] forcing using (spread(k)):(is_direct(column(12 + 3 * k))) with points pt 7 ps 0.3 \
+         lc rgb "#1b9e77" title (k == 1 ? "direct" : ""), \
+       for [k=1:8] forcing using (spread(k)):(is_newton(column(12 + 3 * k))) with points pt 6 ps 0.4 \
+         lc rgb "#d95f02" title (k == 1 ? "fb\\_newton" : ""), \
+       forcing using (spread(9)):(is_direct($39)) with points pt 7 ps 0.3 lc rgb "#1b9e77" notitle, \
+       forcing using (spread(9)):(is_newton($39)) with points pt 6 ps 0.4 lc rgb "#d95f02" notitle, \
+       1 with lines lc rgb "black" lw 1.5 dt 2 title "bound"
+
+  set ylabel "max_l |u^l| / bound"
+  set title "(b) displacement: filled |u^0| + (T/2) V (printed), open |u^0| + T V; proof: |u^0| + T P"
+  plot for [k=1:8] forcing using (spread(k)):(column(13 + 3 * k)) with points pt 7 ps 0.3 \
+         lc rgb "#7570b3" title (k == 1 ? "|u^0| + (T/2) V" : ""), \
+       for [k=1:8] forcing using (spread(k)):(column(14 + 3 * k)) with points pt 6 ps 0.4 \
+         lc rgb "#e7298a" title (k == 1 ? "|u^0| + T V" : ""), \
+       forcing using (spread(9)):40 with points pt 6 ps 0.4 lc rgb "#e7298a" notitle, \
+       1 with lines lc rgb "black" lw 1.5 dt 2 title "bound"
+
+  set xrange [0.05:50]
+  set logscale x 10
+  set format x "10^{%L}"
+  set xtics auto norotate
+  set yrange [1e-6:1e4]
+  set xlabel "amplitude a (m/s^2)"
+  set ylabel "max_l (E^{l+1} - E^l) (J/kg)"
+  set title "(c) E^l = (v^l)^2/2 - f(t_l) u^l rises; W^l (work-corrected) never does beyond round-off"
+  plot forcing using ($4 * (1 + 0.3 * ($1 / runs - 0.5))):(is_direct($43 > 0 ? $43 : NaN)) \
+         with points pt 7 ps 0.3 lc rgb "#1b9e77" title "E, direct", \
+       forcing using ($4 * (1 + 0.3 * ($1 / runs - 0.5))):(is_newton($43 > 0 ? $43 : NaN)) \
+         with points pt 6 ps 0.4 lc rgb "#d95f02" title "E, fb\\_newton"
+
+  set xrange [0.5:200]
+  set yrange [1e-3:1e3]
+  set xlabel "omega (rad/s)"
+  set ylabel "max_l |v^l| / bound"
+  set title "(d) velocity under three readings of |f| against omega, every run"
+  plot forcing using ($5 * (1 + 0.3 * ($1 / runs - 0.5))):($15) with points pt 7 ps 0.3 \
+         lc rgb "#1b9e77" title "sup |f|", \
+       forcing using ($5 * (1 + 0.3 * ($1 / runs - 0.5))):($33) with points pt 6 ps 0.4 \
+         lc rgb "#d95f02" title "constant part", \
+       forcing using ($5 * (1 + 0.3 * ($1 / runs - 0.5))):($36) with points pt 4 ps 0.4 \
+         lc rgb "#7570b3" title "frozen f(t_l)", \
+       1 with lines lc rgb "black" lw 1.5 dt 2 title "bound"
+  unset multiplot
+  unset logscale x
+  set format x "% h"
+}

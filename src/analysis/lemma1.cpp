@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "analysis/energy_forcing.hpp"
 #include "impact/exact.hpp"
 #include "impact/output.hpp"
 #include "scene/read_scene.hpp"
@@ -128,6 +129,27 @@ toml::table case_summary(const Lemma1Result& r) {
   return t;
 }
 
+// [lemma1_forcing]: Lemma 1 with f(t) = -9.80665 + a sin(10 t) (energy_forcing.hpp), for the
+// direct scheme and fb_newton, a = 0 (the control: constant gravity), 2 and 5 m/s^2.
+toml::table forcing_summary() {
+  toml::table out;
+  for (std::string_view name : {"direct", "fb_newton"}) {
+    toml::table method;
+    for (int amplitude : {0, 2, 5}) {
+      const Lemma1Forcing r =
+          lemma1_forcing(amplitude, 10.0, find_method(name)->defaults, kLemma1S, kLemma1SchemeT);
+      method.insert("amplitude_" + std::to_string(amplitude),
+                    toml::table{{"energy_max_abs_deviation", r.energy},
+                                {"energy_constant_part_max_abs_deviation", r.energy_constant},
+                                {"work_energy_max_abs_deviation", r.work},
+                                {"energy_final_change", r.energy_final_change},
+                                {"work_energy_final_change", r.work_final_change}});
+    }
+    out.insert(name, method);
+  }
+  return out;
+}
+
 }  // namespace
 
 std::vector<Lemma1Result> lemma1_results(const ExperimentContext& context) {
@@ -147,7 +169,7 @@ toml::table run_lemma1(const ExperimentContext& context) {
                   [&] { return energy_csv(r.c, case_scene(r.c, context)); });
   }
   context.write("deviation.csv", [&] { return deviation_csv(results); });
-  return toml::table{{"lemma1", summary}};
+  return toml::table{{"lemma1", summary}, {"lemma1_forcing", forcing_summary()}};
 }
 
 const Experiment kLemma1Experiment{

@@ -5,6 +5,8 @@
 #include <vector>
 
 #include "analysis/bounds.hpp"
+#include "analysis/lemma3_forcing.hpp"
+#include "analysis/lemma3_forcing_report.hpp"
 #include "impact/output.hpp"
 
 namespace impact {
@@ -67,7 +69,10 @@ toml::table summary(const Lemma3Summary& s) {
 toml::table run_lemma3(const ExperimentContext& context) {
   const std::vector<Lemma3Run> runs = lemma3_sweep();
   context.write("runs.csv", [&] { return runs_csv(runs); });
-  return toml::table{{"lemma3", summary(summarize_lemma3(runs))}};
+  const std::vector<ForcingRun> forcing = run_forcing_sweep(full_forcing_sweep());
+  context.write("forcing_runs.csv", [&] { return forcing_runs_csv(forcing); });
+  return toml::table{{"lemma3", summary(summarize_lemma3(runs))},
+                     {"lemma3_forcing", forcing_summary(forcing)}};
 }
 
 const Experiment kLemma3Experiment{
