@@ -91,6 +91,10 @@ ExactSolution::ExactSolution(const Model& model, const State& initial)
   if (!(e_ >= 0.0 && e_ <= 1.0))
     throw std::invalid_argument("ExactSolution: COR must be in [0, 1]");
   if (initial.u < model.phi) throw std::invalid_argument("ExactSolution: u0 must be >= phi, (2-2)");
+  if (!model.expression.empty() || (model.harmonic && model.harmonic->amplitude != 0.0))
+    throw std::invalid_argument(
+        "ExactSolution: the closed form is for a constant force; a harmonic one is followed by "
+        "EventTrack (method exact), an expression by method event_driven");
 
   const double d = initial.u - model.phi, v0 = initial.v, f = model.f;
   // The first impact s: the root of d + v0 s + f s^2 / 2 = 0 that is reached first, in the form
@@ -195,21 +199,35 @@ std::int64_t ExactSolution::impacts_until(double t) const {
 
 State ExactSolution::at(double t) const {
   if (!(t > 0.0)) return initial_;
+  if (rest_ && t >= *rest_) return {model_.phi, 0.0};
+  return flight_state(flight_at(t), t);
+}
+
+ExactSolution::Flight ExactSolution::flight_at(double t) const {
+  Flight flight;
+  flight.k = impacts_until(t);
+  const double never = std::numeric_limits<double>::infinity();
+  flight.begin = flight.k == 0 ? 0.0 : impact_time(flight.k).value_or(t);
+  flight.end = impact_time(flight.k + 1).value_or(never);
+  if (rest_) flight.end = std::min(flight.end, *rest_);
+  // Flight after impact k leaves the floor with e^k V1 (Newton's law applied k times).
+  if (flight.k > 0) flight.launch = V1_ * Impl::pow_e(*this, flight.k);
+  return flight;
+}
+
+State ExactSolution::flight_state(const Flight& flight, double t) const {
   const double phi = model_.phi, f = model_.f;
-  if (rest_ && t >= *rest_) return {phi, 0.0};
-  const std::int64_t k = impacts_until(t);
   // The gap u - phi is computed as a gap and added to phi last, so a far floor (phi = 1e6) costs
   // only the final rounding of u, not the accuracy of the gap itself.
   double gap = 0.0, v = 0.0;
-  if (k == 0) {
+  if (flight.k == 0) {
     gap = (initial_.u - phi) + t * (initial_.v + 0.5 * f * t);
     v = initial_.v + f * t;
   } else {
-    // Flight after impact k: leaves the floor at t_k with w = e^k V1 (Newton's law applied k
-    // times). u and v both come from the same tau, so the state lies on the energy level
-    // w^2/2 - f phi (3-1) even where tau carries the rounding of t_k.
-    const double w = V1_ * Impl::pow_e(*this, k);
-    double tau = std::max(0.0, t - impact_time(k).value_or(t));
+    // u and v both come from the same tau, so the state lies on the energy level w^2/2 - f phi
+    // (3-1) even where tau carries the rounding of t_k.
+    const double w = flight.launch;
+    double tau = std::max(0.0, t - flight.begin);
     if (f < 0.0) tau = std::min(tau, 2.0 * w / -f);  // the flight ends at impact k + 1
     gap = tau * (w + 0.5 * f * tau);
     v = w + f * tau;
@@ -236,6 +254,89 @@ double ExactSolution::impulse(double t0, double t1) const {
   // Resting on the floor: u'' = 0, so N = -f (2-1) for the time spent at rest within (t0, t1].
   if (rest_ && model_.f < 0.0) J += -model_.f * std::max(0.0, t1 - std::max(t0, *rest_));
   return J;
+}
+
+ExactStepper::ExactStepper(const Model& model, double h, const ExactParams&)
+    : model_(model), h_(h) {
+  if (!model.expression.empty())
+    throw std::invalid_argument(
+        "method 'exact' has no closed-form flight for a force expression; use method "
+        "'event_driven'");
+  if (model.harmonic && model.harmonic->amplitude != 0.0) {
+    sin_h_ = std::sin(model.harmonic->omega * h);
+    cos_h_ = std::cos(model.harmonic->omega * h);
+  }
+}
+
+void ExactStepper::initialize(const State& s, std::int64_t l) {
+  l0_ = l;
+  rotation_l_ = -1;
+  flight_ = {};
+  if (model_.harmonic && model_.harmonic->amplitude != 0.0) {
+    track_.emplace(model_, s, static_cast<double>(l) * h_);
+    track_->set_event_sink(sink_);
+  } else {
+    Model constant = model_;
+    constant.harmonic.reset();
+    solution_.emplace(constant, s);
+  }
+}
+
+void ExactStepper::set_event_sink(EventSink sink) {
+  sink_ = std::move(sink);
+  if (track_) track_->set_event_sink(sink_);
+}
+
+StepInfo ExactStepper::closed_form_step(State& s, double t0, double t1) {
+  s = solution_->at(t1);
+  StepInfo info;
+  info.contact_force = solution_->impulse(t0, t1) / h_;
+  if (sink_) emit_closed_form_events(t0, t1);
+  const auto rest = solution_->rest_time();
+  flight_ = t1 > 0.0 && !(rest && t1 >= *rest) ? solution_->flight_at(t1) : ExactSolution::Flight{};
+  return info;
+}
+
+// The impacts in (t0, t1] and the start of the rest, at grid time l0 h + t.
+void ExactStepper::emit_closed_form_events(double t0, double t1) const {
+  const double origin = static_cast<double>(l0_) * h_, e = model_.cor.value_or(1.0);
+  const auto rest = solution_->rest_time();
+  const std::int64_t first = solution_->impacts_until(t0) + 1, last = solution_->impacts_until(t1);
+  const double V1 = solution_->impact_speed(1).value_or(0.0);
+  for (std::int64_t k = first; k <= last; ++k) {
+    const auto t = solution_->impact_time(k);
+    const auto V = solution_->impact_speed(k);
+    if (!t || !V || (rest && *V < kChatterCutoff * V1 && k > 1)) break;
+    sink_(Event{origin + *t, EventKind::impact, -*V, (rest && *t == *rest) ? 0.0 : e * *V});
+  }
+  if (rest && *rest <= t1 && (t0 < *rest || (*rest == 0.0 && t0 == 0.0)))
+    sink_(Event{origin + *rest, EventKind::stick, 0.0, 0.0});
+}
+
+StepInfo ExactStepper::harmonic_step(State& s, std::int64_t l) {
+  const double t1 = static_cast<double>(l + 1) * h_;
+  if (const HarmonicFlight* flight = track_->free_flight_until(t1)) {
+    if (l == rotation_l_ && ++since_anchor_ < kRotationAnchor) {
+      const double sin1 = sin_ * cos_h_ + cos_ * sin_h_;
+      cos_ = cos_ * cos_h_ - sin_ * sin_h_;
+      sin_ = sin1;
+    } else {
+      const double theta = flight->theta(t1);
+      sin_ = std::sin(theta);
+      cos_ = std::cos(theta);
+      since_anchor_ = 0;
+    }
+    rotation_l_ = l + 1;
+    const State g = flight->at(t1, sin_, cos_);
+    s = {track_->phi() + std::max(g.u, 0.0), g.v};
+    return {};
+  }
+  StepInfo info;
+  double impulse = 0.0;
+  s = track_->advance(t1, impulse);
+  info.contact_force = impulse / h_;
+  info.converged = track_->converged();
+  return info;
 }
 
 }  // namespace impact

@@ -21,14 +21,18 @@
 //  - After a plastic impact (e = 0) the particle rests if f <= 0; for f > 0 it lifts off again.
 //  - Past the Zeno time there were infinitely many impacts: impacts_until() then returns
 //    INT64_MAX / 2, a cap larger than any count reached before t_inf.
-//  - The constructor throws std::invalid_argument for non-finite data, u0 < phi or COR outside
-//    [0, 1]. A time that overflows (e.g. a Zeno time beyond DBL_MAX for a vanishing f) is treated
-//    as never reached.
+//  - The constructor throws std::invalid_argument for non-finite data, u0 < phi, COR outside
+//    [0, 1] or a force that is not constant (a harmonic part with a non-zero amplitude, an
+//    expression): ExactStepper follows a harmonic force with EventTrack (event_track.hpp). A time
+//    that overflows (e.g. a Zeno time beyond DBL_MAX for a vanishing f) is treated as never
+//    reached.
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <optional>
 
+#include "impact/event_track.hpp"
 #include "impact/model.hpp"
 
 namespace impact {
@@ -52,6 +56,15 @@ class ExactSolution {
   // From this time on the particle rests on the floor (Zeno time, or the plastic impact time).
   std::optional<double> rest_time() const;
 
+  // The free flight that holds a time t with 0 < t < rest_time(): at(t) is flight_state(flight, t)
+  // for every t in [begin, end), so a caller that samples in order finds it once per flight.
+  struct Flight {
+    std::int64_t k = 0;  // impacts before it
+    double begin = std::numeric_limits<double>::infinity(), end = 0, launch = 0;
+  };
+  Flight flight_at(double t) const;
+  State flight_state(const Flight& flight, double t) const;
+
  private:
   struct Impl;
   Model model_;
@@ -67,31 +80,54 @@ struct ExactParams {
 };
 
 // The exact solution as a stepper: sampled at the grid times after the state it was initialized
-// with, so that it runs wherever a time-stepper does.
+// with, so that it runs wherever a time-stepper does. A constant force uses ExactSolution in closed
+// form (time measured from the initial grid time); a harmonic one the event-driven EventTrack
+// (absolute time t = l h, which the force depends on). An expression force is refused: its
+// reference is the method event_driven.
+// Sampling a grid in order costs a polynomial per sample inside one flight: the flight found for
+// the previous sample is reused while the samples stay in it, and for a harmonic force sin and cos
+// of omega t_l + phase advance by one rotation per step, recomputed exactly every
+// kRotationAnchor samples (the recurrence drifts by about an ulp per step, ~1e-15 in between).
 class ExactStepper {
  public:
-  ExactStepper(const Model& model, double h, const ExactParams&) : model_(model), h_(h) {}
+  static constexpr std::int64_t kRotationAnchor = 32;
 
-  // The solution from (t_l, s); throws std::invalid_argument where ExactSolution does.
-  void initialize(const State& s, std::int64_t l) {
-    solution_.emplace(model_, s);
-    l0_ = l;
-  }
+  ExactStepper(const Model& model, double h, const ExactParams&);
+
+  // The solution from (t_l, s); throws std::invalid_argument where ExactSolution and EventTrack do.
+  void initialize(const State& s, std::int64_t l);
 
   // Samples the solution at t_{l+1}; N^l = impulse in (t_l, t_{l+1}] / h.
-  StepInfo do_step(State& s, std::int64_t l) const {
+  StepInfo do_step(State& s, std::int64_t l) {
+    if (track_) return harmonic_step(s, l);
     const double t0 = static_cast<double>(l - l0_) * h_, t1 = static_cast<double>(l + 1 - l0_) * h_;
-    s = solution_->at(t1);
-    StepInfo info;
-    info.contact_force = solution_->impulse(t0, t1) / h_;
-    return info;
+    if (t0 >= flight_.begin && t1 < flight_.end) {
+      s = solution_->flight_state(flight_, t1);
+      return {};
+    }
+    return closed_form_step(s, t0, t1);
   }
 
+  // Receives the impacts, sticks and lifts in increasing t as the samples pass them; t is the grid
+  // time (l h), also for a constant force. A constant-force Zeno sequence is reported up to the
+  // impacts slower than kChatterCutoff times the first, then the stick at t_inf.
+  void set_event_sink(EventSink sink);
+
  private:
+  StepInfo closed_form_step(State& s, double t0, double t1);
+  StepInfo harmonic_step(State& s, std::int64_t l);
+  void emit_closed_form_events(double t0, double t1) const;
+
   Model model_;
   double h_;
   std::optional<ExactSolution> solution_;
+  ExactSolution::Flight flight_;
+  std::optional<EventTrack> track_;
+  EventSink sink_;
   std::int64_t l0_ = 0;
+  // sin and cos of omega t_l + phase for l = rotation_l_, and of omega h.
+  double sin_ = 0, cos_ = 1, sin_h_ = 0, cos_h_ = 1;
+  std::int64_t rotation_l_ = -1, since_anchor_ = 0;
 };
 
 }  // namespace impact

@@ -1,0 +1,152 @@
+// The certified contact search of flight_search.hpp.
+#include "impact/flight_search.hpp"
+
+#include <gsl/gsl_roots.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <numbers>
+
+#include "impact/gsl_errors.hpp"
+
+namespace impact {
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// Brent's iterations: it halves the bracket at least every few iterations, so 200 is far more
+// than the ~60 halvings from any bracket down to an ulp.
+constexpr int kMaxBrentIterations = 200;
+
+double amplitude(const Model& model) {
+  return model.harmonic ? model.harmonic->amplitude : 0.0;
+}
+
+struct GapAt {
+  const HarmonicFlight* flight;
+  static double gap(double t, void* self) { return static_cast<GapAt*>(self)->flight->at(t).u; }
+};
+
+// The root of the gap in [lo, hi], where it decreases strictly from g(lo) > 0 to g(hi) <= 0.
+double refine_root(const HarmonicFlight& flight, double lo, double hi) {
+  GslErrorsAsStatus quiet;
+  GapAt self{&flight};
+  gsl_function F{&GapAt::gap, &self};
+  const std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> solver(
+      gsl_root_fsolver_alloc(gsl_root_fsolver_brent), &gsl_root_fsolver_free);
+  if (!solver || gsl_root_fsolver_set(solver.get(), &F, lo, hi) != GSL_SUCCESS) return hi;
+  for (int i = 0; i < kMaxBrentIterations; ++i) {
+    if (gsl_root_fsolver_iterate(solver.get()) != GSL_SUCCESS) break;
+    lo = gsl_root_fsolver_x_lower(solver.get());
+    hi = gsl_root_fsolver_x_upper(solver.get());
+    if (gsl_root_test_interval(lo, hi, 0.0, 2 * std::numeric_limits<double>::epsilon()) ==
+        GSL_SUCCESS)
+      break;
+  }
+  // The upper end: the gap there is <= 0 up to rounding, so the contact is never placed before the
+  // floor is reached.
+  return hi;
+}
+
+}  // namespace
+
+HarmonicFlight::HarmonicFlight(const Model& model, double t_a, double gap_a, double v_a)
+    : t_a_(t_a), gap_a_(gap_a), v_a_(v_a), f_(model.f) {
+  if (model.harmonic && model.harmonic->amplitude != 0.0) {
+    const Harmonic& w = *model.harmonic;
+    omega_ = w.omega;
+    phase_ = w.phase;
+    k_ = w.amplitude / w.omega;
+    k_w_ = k_ / w.omega;
+    sin_a_ = std::sin(theta(t_a));
+    cos_a_ = std::cos(theta(t_a));
+  }
+}
+
+State HarmonicFlight::at(double t) const {
+  if (k_ == 0.0) return at(t, 0.0, 1.0);
+  const double th = theta(t);
+  return at(t, std::sin(th), std::cos(th));
+}
+
+ForceBounds::ForceBounds(const Model& model) {
+  const double a = std::fabs(amplitude(model)), w = model.harmonic ? model.harmonic->omega : 0.0;
+  B = std::fabs(model.f) + a;
+  C = a * w;
+  D = a * w * w;
+}
+
+double force_at(const Model& model, double t) {
+  const double a = amplitude(model);
+  if (a == 0.0) return model.f;
+  return model.f + a * std::sin(model.harmonic->omega * t + model.harmonic->phase);
+}
+
+double force_rate(const Model& model, double t) {
+  const double a = amplitude(model);
+  if (a == 0.0) return 0.0;
+  const Harmonic& w = *model.harmonic;
+  return a * w.omega * std::cos(w.omega * t + w.phase);
+}
+
+std::optional<Contact> search_contact(const HarmonicFlight& flight, const ForceBounds& bounds,
+                                      double& certified, double horizon, long& budget) {
+  const double B = bounds.B;
+  while (certified <= horizon && budget > 0) {
+    --budget;
+    const double t = certified;
+    const State s = flight.at(t);
+    const double g = s.u, v = s.v;
+    if (g <= 0.0 && v <= 0.0) return Contact{t, v};  // on (or, by rounding, below) the floor
+    if (v < 0.0 && v * v >= 2 * B * g) {
+      // One root in [t, t + s_up], where g decreases strictly (flight_search.hpp).
+      const double s_up = 2 * g / (-v + std::sqrt(std::fma(v, v, -2 * B * g)));
+      const double hi = t + s_up;
+      const State end = flight.at(hi);
+      if (end.u <= 0.0) {
+        const double root = refine_root(flight, t, hi);
+        return Contact{root, std::fmin(flight.at(root).v, 0.0)};
+      }
+      // Rounding kept the gap at t + s_up positive: no root before it either.
+      certified = hi > t ? hi : std::nextafter(t, kInfinity);
+      continue;
+    }
+    const double gp = std::fmax(g, 0.0);
+    if (B == 0.0) {
+      if (v >= 0.0) certified = kInfinity;  // no force: a rising or resting particle never returns
+      continue;
+    }
+    const double root = std::sqrt(std::fma(v, v, 2 * B * gp));
+    const double step = v >= 0.0 ? (v + root) / B : 2 * gp / (root - v);
+    if (!(t + step > t)) return Contact{t, std::fmin(v, 0.0)};  // stalled: a touch at rounding
+    certified = t + step;
+  }
+  return std::nullopt;
+}
+
+double zero_speed_departure(const Model& model, const ForceBounds& bounds, double t,
+                            bool at_crossing) {
+  const double f = at_crossing ? 0.0 : force_at(model, t), rate = force_rate(model, t);
+  double stretch = 0.0;
+  if (f > 0.0) stretch = bounds.C > 0.0 ? 1.5 * f / bounds.C : kInfinity;
+  if (f >= 0.0 && rate > 0.0) stretch = std::fmax(stretch, 2 * rate / bounds.D);
+  return stretch;
+}
+
+double lift_time(const Model& model, double t) {
+  const double a = std::fabs(amplitude(model));
+  if (model.f + a <= 0.0) return kInfinity;
+  if (a == 0.0) return t;  // a constant f > 0 never holds the particle down
+  const Harmonic& w = *model.harmonic;
+  // f + |A| sin(omega t + psi) with psi = phase (+ pi for A < 0) crosses 0 upward where
+  // omega t + psi = asin(-f/|A|) + 2 pi n; for f > |A| it is positive everywhere.
+  if (model.f >= a) return t;
+  const double psi = w.phase + (w.amplitude < 0.0 ? std::numbers::pi : 0.0);
+  const double crossing = std::asin(-model.f / a), two_pi = 2 * std::numbers::pi;
+  const double n = std::ceil((w.omega * t + psi - crossing) / two_pi);
+  return std::fmax(t, (crossing + two_pi * n - psi) / w.omega);
+}
+
+}  // namespace impact

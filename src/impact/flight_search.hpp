@@ -1,0 +1,84 @@
+// Free flight under f(t) = f + A sin(omega t + phase) and the search for its first contact with
+// the floor, which never misses one, grazing ones included.
+//
+// The gap g = u - phi of a flight satisfies g'' = f(t), so |g''| <= B = |f| + |A| (the sup of the
+// force), |g'''| <= C = |A| omega and |g''''| <= D = |A| omega^2. From a time t with g(t) > 0,
+//   g(t + s) >= g(t) + g'(t) s - B s^2 / 2 > 0   for 0 <= s < s*(t) = (g' + sqrt(g'^2 + 2 B g)) /
+//   B,
+// so no root lies in [t, t + s*): the search steps by s*, each step certified. Once the particle
+// approaches the floor fast enough, g'(t) < 0 with g'^2 >= 2 B g, the upper bound
+// g(t + s) <= g + g' s + B s^2 / 2 reaches 0 at s_up = 2 g / (|g'| + sqrt(g'^2 - 2 B g)) <= |g'| /
+// B, and g' <= g'(t) + B s < 0 there: g decreases strictly on [t, t + s_up] and has exactly one
+// root in it, the first contact, which GSL's Brent solver refines to rounding. Near a grazing
+// minimum (g' -> 0) the steps s* ~ sqrt(2 g / B) still pass it in a few steps when the minimum is
+// above the floor, and when it dips below the floor, however slightly, g' < 0 with g'^2 >= 2 B g
+// happens before the dip: a sign check at sample times misses such a dip, this search cannot. What
+// floating point can still hide is a dip shallower than the rounding of g (~1e-16 of the terms of
+// u): a search that stops progressing (t + s* == t) reports a contact there, with the speed -g'.
+// A flight that leaves the floor with zero speed (g = g' = 0) is certified for its first stretch by
+// the next-order bounds: g(t + s) >= f s^2 / 2 - C s^3 / 6 > 0 for s < 3 f / C when f(t) > 0, and
+// g(t + s) >= f' s^3 / 6 - D s^4 / 24 > 0 for s < 4 f' / D when f(t) = 0 < f'(t) (a lift-off).
+#pragma once
+
+#include <optional>
+
+#include "impact/model.hpp"
+
+namespace impact {
+
+// The flight from the anchor (t_a, gap_a, v_a) in closed form, with the per-flight constants
+// precomputed, so that a sample costs a polynomial and one (sin, cos) pair of omega t + phase.
+class HarmonicFlight {
+ public:
+  HarmonicFlight() = default;
+  HarmonicFlight(const Model& model, double t_a, double gap_a, double v_a);
+
+  double theta(double t) const { return omega_ * t + phase_; }
+  // Gap and velocity at t from sin and cos of theta(t): v = v_a + f dt + (A/omega)(cos a0 - cos),
+  // g = g_a + dt (v_a + f dt/2 + (A/omega) cos a0) - (A/omega^2)(sin - sin a0).
+  State at(double t, double sin_theta, double cos_theta) const {
+    const double dt = t - t_a_;
+    return {gap_a_ + dt * (v_a_ + f_ * dt / 2 + k_ * cos_a_) - k_w_ * (sin_theta - sin_a_),
+            v_a_ + f_ * dt + k_ * (cos_a_ - cos_theta)};
+  }
+  State at(double t) const;
+  double start() const { return t_a_; }
+
+ private:
+  double t_a_ = 0, gap_a_ = 0, v_a_ = 0, f_ = 0, omega_ = 0, phase_ = 0;
+  double k_ = 0, k_w_ = 0, cos_a_ = 1, sin_a_ = 0;  // A/omega, A/omega^2, cos and sin of theta(t_a)
+};
+
+// The bounds on the force and its derivatives that certify the search steps (see above).
+struct ForceBounds {
+  explicit ForceBounds(const Model& model);
+  double B = 0, C = 0, D = 0;  // sup |f|, sup |f'|, sup |f''|
+};
+
+struct Contact {
+  double t = 0;  // the first time with g = 0 after the anchor
+  double v = 0;  // the velocity there, <= 0
+};
+
+// Advances the certificate `certified` (no contact in [anchor, certified)) by certified steps until
+// it passes `horizon` or the first contact is found, which it returns. At most `budget` steps;
+// budget is decreased by the steps taken (a stalled search uses it up; the caller reports it).
+std::optional<Contact> search_contact(const HarmonicFlight& flight, const ForceBounds& bounds,
+                                      double& certified, double horizon, long& budget);
+
+// The certified first stretch of a flight that leaves the floor at t with zero speed (see above):
+// 0 when neither bound certifies one, infinity when the force can never bring it back. At a
+// lift-off (`at_crossing`) f(t) is 0 in exact arithmetic and taken so, whatever its rounding.
+double zero_speed_departure(const Model& model, const ForceBounds& bounds, double t,
+                            bool at_crossing);
+
+// The first time >= t at which f(t) crosses 0 upward (a particle resting on the floor lifts off
+// there, (2-2): N = -f(t) >= 0 no longer holds): in closed form, asin(-f/|A|) + 2 pi n; infinity
+// when f + |A| <= 0 (it never lifts).
+double lift_time(const Model& model, double t);
+
+// f(t) and f'(t).
+double force_at(const Model& model, double t);
+double force_rate(const Model& model, double t);
+
+}  // namespace impact
