@@ -132,7 +132,7 @@ toml::table case_summary(const Lemma1Result& r) {
 // [lemma1_forcing]: Lemma 1 with f(t) = -9.80665 + a sin(10 t) (energy_forcing.hpp), for the
 // exact elastic solution sampled on the grid, the direct scheme and fb_newton, a = 0 (the control:
 // constant gravity), 2 and 5 m/s^2.
-toml::table forcing_summary() {
+toml::table lemma1_forcing_summary() {
   toml::table out;
   for (std::string_view name : {"exact", "direct", "fb_newton"}) {
     toml::table method;
@@ -170,7 +170,7 @@ toml::table run_lemma1(const ExperimentContext& context) {
                   [&] { return energy_csv(r.c, case_scene(r.c, context)); });
   }
   context.write("deviation.csv", [&] { return deviation_csv(results); });
-  return toml::table{{"lemma1", summary}, {"lemma1_forcing", forcing_summary()}};
+  return toml::table{{"lemma1", summary}, {"lemma1_forcing", lemma1_forcing_summary()}};
 }
 
 const Experiment kLemma1Experiment{
