@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "analysis/laplace.hpp"
@@ -27,7 +28,8 @@ ForcedEnergyCounts ForcedEnergyMonitor::finish(double sup_force, double T, doubl
                                                double max_v) const {
   ForcedEnergyCounts c;
   c.steps = static_cast<std::int64_t>(increments_.size());
-  const double roundoff = energy_evaluation_roundoff(sup_force, T, max_u, max_v);
+  const double roundoff = energy_evaluation_roundoff(sup_force, T, max_u, max_v) +
+                          phasor_energy_roundoff(force_.model(), sup_force, T, max_v);
   for (const Increment& i : increments_) {
     const double tolerance = roundoff + i.rebound_roundoff;
     c.work_rises += i.work > tolerance;
@@ -36,6 +38,14 @@ ForcedEnergyCounts ForcedEnergyMonitor::finish(double sup_force, double T, doubl
     c.max_energy_rise = std::fmax(c.max_energy_rise, i.energy);
   }
   return c;
+}
+
+double phasor_energy_roundoff(const Model& model, double sup_force, double T, double max_v) {
+  if (!model.harmonic) return 0.0;
+  const Harmonic& w = *model.harmonic;
+  const double drift = 5 * GridPhasor::kReanchorSteps * std::numeric_limits<double>::epsilon();
+  const double scale = std::fabs(w.amplitude) / w.omega * drift;
+  return 2 * scale * (max_v + sup_force * (T + 2 / w.omega));
 }
 
 void accumulate(ForcedEnergySummary& summary, const ForcedEnergyCounts& counts) {

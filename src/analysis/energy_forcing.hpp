@@ -16,6 +16,7 @@
 #include "impact/force.hpp"
 #include "impact/model.hpp"
 #include "impact/registry.hpp"
+#include "impact/scheme_flight.hpp"
 
 namespace impact {
 
@@ -30,7 +31,8 @@ struct ForcedEnergyCounts {
 
 // Collects the increments of one run step by step (observe), and counts them against the
 // round-off tolerance of bounds.hpp once the run's maxima are known (finish): energy_evaluation_
-// roundoff with |f| = sup|f|, plus rebound_energy_roundoff on a contact step (tolerances.hpp).
+// roundoff with |f| = sup|f|, plus rebound_energy_roundoff on a contact step (tolerances.hpp), plus
+// for a harmonic force the error of the schemes' grid phasor (phasor_energy_roundoff).
 class ForcedEnergyMonitor {
  public:
   ForcedEnergyMonitor(const Model& model, double h, const State& initial);
@@ -47,6 +49,14 @@ class ForcedEnergyMonitor {
   State previous_;
   std::vector<Increment> increments_;
 };
+
+// The schemes evaluate sin and cos of omega t_l + phase by a rotation re-anchored every
+// GridPhasor::kReanchorSteps steps (scheme_flight.hpp), off by at most d = 5 kReanchorSteps eps
+// relative. Their free flight carries it as (a/omega) d in v and (a/omega)(T + 2/omega) d in u
+// (the terms (a/omega) cos theta and (a/omega) c sin theta, c <= 1/omega), and a re-anchoring step
+// passes it to one increment: (v^2/2) changes by up to 2 max|v| (a/omega) d, f^l (u^{l+1} - u^l) by
+// up to 2 sup|f| (a/omega)(T + 2/omega) d. 0 without a harmonic part.
+double phasor_energy_roundoff(const Model& model, double sup_force, double T, double max_v);
 
 struct ForcedEnergySummary {
   std::int64_t steps = 0, work_rises = 0, energy_rises = 0;
