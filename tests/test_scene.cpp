@@ -239,7 +239,8 @@ TEST_CASE("scene: initial data, floor and force are range-checked", "[scene]") {
   CHECK(parse(kBase + "[floor]\ncor = 0.0\n").model.cor == 0.0);
   CHECK(parse(kBase + "[floor]\ncor = 1.0\n").model.cor == 1.0);
 
-  CHECK_SCENE_ERROR(parse(kBase + "[force]\n"), Contains("force.f") && Contains("required key"));
+  CHECK_SCENE_ERROR(parse(kBase + "[force]\n"),
+                    Contains("[force]") && Contains("the table is empty"));
 }
 
 TEST_CASE("scene: missing required tables and keys", "[scene]") {

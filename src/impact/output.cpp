@@ -18,14 +18,16 @@
 namespace impact {
 namespace {
 
-// The temporary file being written, removed by the signal handler if a signal ends the run (one
-// per process: the CLI writes one output at a time). g_temp_set is cleared before the name changes
-// and set after, so that the handler never reads a half-copied name.
-char g_temp_path[PATH_MAX];
-volatile std::sig_atomic_t g_temp_set = 0;
+// The temporary files being written, removed by the signal handler if a signal ends the run (the
+// CLI writes at most two at a time: the rows and the events). A slot's g_temp_set is cleared
+// before its name changes and set after, so that the handler never reads a half-copied name.
+constexpr int kTempSlots = 2;
+char g_temp_path[kTempSlots][PATH_MAX];
+volatile std::sig_atomic_t g_temp_set[kTempSlots] = {};
 
 extern "C" void remove_temp_and_reraise(int sig) {
-  if (g_temp_set) unlink(g_temp_path);
+  for (int i = 0; i < kTempSlots; ++i)
+    if (g_temp_set[i]) unlink(g_temp_path[i]);
   // With the default action back, the signal ends the process once the handler returns (it is
   // blocked until then), as it would have without the handler: same exit status, core dump.
   struct sigaction default_action {};
@@ -201,10 +203,12 @@ AtomicFile::AtomicFile(const std::string& path) : path_(path) {
   sigprocmask(SIG_BLOCK, &all, &previous);
   int fd = mkstemp(name.data());
   const int mkstemp_error = errno;
-  if (fd >= 0 && name.size() <= sizeof g_temp_path) {
-    g_temp_set = 0;
-    std::memcpy(g_temp_path, name.data(), name.size());
-    g_temp_set = 1;
+  for (int i = 0; i < kTempSlots && fd >= 0 && name.size() <= PATH_MAX; ++i) {
+    if (g_temp_set[i]) continue;
+    std::memcpy(g_temp_path[i], name.data(), name.size());
+    g_temp_set[i] = 1;
+    slot_ = i;
+    break;
   }
   sigprocmask(SIG_SETMASK, &previous, nullptr);
   errno = mkstemp_error;
@@ -249,7 +253,8 @@ void AtomicFile::open_in_place(const std::string& target) {
 // Removes the temporary, and then its name from the signal handler's reach.
 void AtomicFile::forget_temp() {
   unlink(temp_.c_str());
-  if (temp_ == g_temp_path) g_temp_set = 0;
+  if (slot_ >= 0) g_temp_set[slot_] = 0;
+  slot_ = -1;
 }
 
 AtomicFile::~AtomicFile() {
@@ -264,8 +269,8 @@ AtomicFile::~AtomicFile() {
   if (!committed_) {
     if (stream_) std::fclose(stream_);
     forget_temp();
-  } else if (temp_ == g_temp_path) {
-    g_temp_set = 0;
+  } else if (slot_ >= 0) {
+    g_temp_set[slot_] = 0;
   }
 }
 
@@ -341,11 +346,13 @@ void CsvWriter::row(double t, const State& s, const StepInfo& info) {
         p = format_double(p, buf + sizeof buf, info.contact_force);
         break;
       case Channel::E: {
-        const double E = energy(model_, s);
+        const double E = work_ ? work_->energy(s) : energy(model_, s);
         if (!std::isfinite(E)) [[unlikely]] {
           char when[32];
           throw NumericalError("at t = " + std::string(when, format_double(when, when + 32, t)) +
-                               ": the energy v^2/2 - f u (3-1) overflows (u and v are finite)");
+                               (work_ ? ": the energy v^2/2 - f(0) u(0) - W(t) overflows"
+                                      : ": the energy v^2/2 - f u (3-1) overflows") +
+                               " (u and v are finite)");
         }
         p = format_double(p, buf + sizeof buf, E);
         break;

@@ -10,6 +10,7 @@
 
 #include "impact/model.hpp"
 #include "impact/scene.hpp"
+#include "impact/work_energy.hpp"
 
 namespace impact {
 
@@ -54,6 +55,7 @@ class AtomicFile {
   std::string temp_;
   std::FILE* stream_ = nullptr;
   std::vector<char> buffer_;
+  int slot_ = -1;  // the signal handler's slot for temp_ (output.cpp), -1 for none
   bool committed_ = false;
 };
 
@@ -78,14 +80,18 @@ class RowSchedule {
 class CsvWriter {
  public:
   CsvWriter(std::FILE* out, const Model& model, std::vector<Channel> channels);
+  // The E channel of a time-dependent force: v^2/2 - f(0) u(0) - W(t) from `work`, which the
+  // caller feeds every step (work_energy.hpp); without it, E is (3-1), v^2/2 - f u.
+  void use_work(const WorkEnergy* work) { work_ = work; }
   void header();
-  // Throws NumericalError if the energy channel overflows (u and v finite, v^2/2 - f u not).
+  // Throws NumericalError if the energy channel overflows (u and v finite, E not).
   void row(double t, const State& s, const StepInfo& info);
 
  private:
   std::FILE* out_;
   Model model_;
   std::vector<Channel> channels_;
+  const WorkEnergy* work_ = nullptr;
 };
 
 // Appends x in round-trip precision (17 significant digits) to buf; returns the new end.

@@ -119,6 +119,9 @@ KeyValue KeyReader::value(const KeySpec& spec, const toml::node& node) const {
       fail_value(spec.table, spec.key, node,
                  "must be one of " + join(choices(spec)) + did_you_mean(s->get(), choices(spec)));
     }
+    case KeyType::text:
+      if (const auto* s = node.as_string()) return s->get();
+      fail_value(spec.table, spec.key, node, "must be a string");
     case KeyType::names:
       break;  // read by its own table's reader (output.channels depends on the method)
   }

@@ -14,6 +14,8 @@
 #include <limits>
 #include <sstream>
 
+#include "impact/work_energy.hpp"
+#include "scene/force_keys.hpp"
 #include "scene/key_reader.hpp"
 #include "scene/method_keys.hpp"
 #include "scene/overrides.hpp"
@@ -80,6 +82,7 @@ Scene build(const toml::table& root, const Origins& origins) {
       if (spec.table == t.name && spec.set) r.read(*table, spec, scene);
   }
 
+  check_force(r, root, scene);
   if (scene.initial.u < scene.model.phi)
     r.fail_value("initial", "u0", node_at(root, "initial", "u0"),
                  "must be >= floor.phi = " + show_number(scene.model.phi) +
@@ -99,10 +102,11 @@ Scene build(const toml::table& root, const Origins& origins) {
   if (const toml::node* channels = root.at_path("output.channels").node())
     read_channels(r, *channels, method, scene.output);
   for (Channel c : scene.output.channels)
-    if (c == Channel::E && !std::isfinite(energy(scene.model, scene.initial)))
+    if (c == Channel::E && !std::isfinite(initial_energy(scene.model, scene.initial)))
       r.fail("output", "channels",
-             "E: the initial energy v0^2/2 - f u0 (3-1) is beyond the double range (v0 = " +
-                 show_number(scene.initial.v) + ", f = " + show_number(scene.model.f) +
+             "E: the initial energy v0^2/2 - f(0) u0 (3-1) is beyond the double range (v0 = " +
+                 show_number(scene.initial.v) +
+                 ", f(0) = " + show_number(ForceFunction(scene.model).at(0.0)) +
                  ", u0 = " + show_number(scene.initial.u) + ")");
   // Compliance has no impact law to apply a COR to: refuse rather than silently run elastic.
   if (scene.model.cor && !method.takes_cor) {

@@ -34,6 +34,9 @@ std::string allowed(const KeySpec& spec) {
     case KeyType::integer:
       out = "integer " + spec.range.text();
       break;
+    case KeyType::text:
+      out = "a string";
+      break;
     case KeyType::name:
     case KeyType::names: {
       const auto choices = spec.choices();

@@ -62,12 +62,6 @@ const KeySpec kKeys[] = {
        return s.model.cor ? KeyValue(*s.model.cor) : KeyValue();
      },
      .set = [](Scene& s, const KeyValue& v) { s.model.cor = std::get<double>(v); }},
-    {.table = "force",
-     .key = "f",
-     .type = KeyType::number,
-     .required = true,
-     .meaning = "constant body force (without [force], none)",
-     .set = [](Scene& s, const KeyValue& v) { s.model.f = std::get<double>(v); }},
     {.table = "time",
      .key = "T",
      .type = KeyType::number,
@@ -127,19 +121,29 @@ std::span<const TableSpec> scene_tables() {
   return kTables;
 }
 
+// The [force] keys are force_keys.cpp's; each table's keys in the order of kTables.
 std::span<const KeySpec> scene_keys() {
-  return kKeys;
+  static const std::vector<KeySpec> keys = [] {
+    std::vector<KeySpec> all;
+    for (const TableSpec& t : kTables) {
+      for (const KeySpec& k : kKeys)
+        if (k.table == t.name) all.push_back(k);
+      if (t.name == "force") all.insert(all.end(), force_keys().begin(), force_keys().end());
+    }
+    return all;
+  }();
+  return keys;
 }
 
 const KeySpec* find_scene_key(std::string_view table, std::string_view key) {
-  for (const auto& k : kKeys)
+  for (const auto& k : scene_keys())
     if (k.table == table && k.key == key) return &k;
   return nullptr;
 }
 
 std::vector<std::string_view> key_names(std::string_view table, std::string_view method) {
   std::vector<std::string_view> names;
-  for (const auto& k : kKeys)
+  for (const auto& k : scene_keys())
     if (k.table == table) names.push_back(k.key);
   for (const auto& k : method_keys())
     if (k.table == table && k.method == method) names.push_back(k.key);

@@ -16,7 +16,7 @@
 
 namespace impact {
 
-enum class KeyType { number, integer, name, names };
+enum class KeyType { number, integer, name, names, text };
 
 // The values a number or integer key accepts; the whole real line means any finite number.
 struct Range {
@@ -62,6 +62,8 @@ std::span<const TableSpec> scene_tables();
 std::span<const KeySpec> scene_keys();
 // The keys of [method] that each method reads (method_keys.cpp).
 std::span<const KeySpec> method_keys();
+// The keys of [force] (force_keys.cpp), which scene_keys() includes.
+std::span<const KeySpec> force_keys();
 
 // The key table.key of every scene (nullptr if there is none).
 const KeySpec* find_scene_key(std::string_view table, std::string_view key);

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "impact/output.hpp"
+#include "impact/work_energy.hpp"
 #include "scene/read_scene.hpp"
 #include "scene/toml_text.hpp"
 
@@ -129,6 +130,15 @@ constexpr SweepGrid::Key method_entry(std::string_view name, bool integer = fals
   return {name, integer, &method_key<Params, Member>, &set_method_key<Params, Member>};
 }
 
+// A key of the harmonic force, NaN when the scene has none; set only after the scene reader
+// accepted the point, whose scene then has one.
+template <auto Member>
+constexpr SweepGrid::Key harmonic_entry(std::string_view name) {
+  return {name, false,
+          [](const Scene& s) { return s.model.harmonic ? *s.model.harmonic.*Member : kNaN; },
+          [](Scene& s, double x) { s.model.harmonic.value().*Member = x; }};
+}
+
 constexpr SweepGrid::Key kKeys[] = {
     {"initial.u0", false, [](const Scene& s) { return s.initial.u; },
      [](Scene& s, double x) { s.initial.u = x; }},
@@ -140,6 +150,9 @@ constexpr SweepGrid::Key kKeys[] = {
      [](Scene& s, double x) { s.model.cor = x; }},
     {"force.f", false, [](const Scene& s) { return s.model.f; },
      [](Scene& s, double x) { s.model.f = x; }},
+    harmonic_entry<&Harmonic::amplitude>("force.amplitude"),
+    harmonic_entry<&Harmonic::omega>("force.omega"),
+    harmonic_entry<&Harmonic::phase>("force.phase"),
     {"time.T", false, [](const Scene& s) { return s.T; }, [](Scene& s, double x) { s.T = x; }},
     {"time.h", false, [](const Scene& s) { return s.grid.h; },
      [](Scene& s, double x) { s.grid.h = x; }},
@@ -163,7 +176,9 @@ bool same_scene(const Scene& a, const Scene& b) {
   for (const auto& key : kKeys)
     if (std::bit_cast<std::uint64_t>(key.get(a)) != std::bit_cast<std::uint64_t>(key.get(b)))
       return false;
-  return a.model.cor.has_value() == b.model.cor.has_value() && a.grid.steps == b.grid.steps &&
+  return a.model.cor.has_value() == b.model.cor.has_value() &&
+         a.model.harmonic.has_value() == b.model.harmonic.has_value() &&
+         a.model.expression == b.model.expression && a.grid.steps == b.grid.steps &&
          a.method == b.method && a.output.channels == b.output.channels &&
          a.output.every == b.output.every;
 }
@@ -284,8 +299,10 @@ void SweepGrid::check_cross_keys(std::int64_t i, Scene& scene) const {
          " steps is too many to count exactly (at most 2^53 = 9007199254740992)");
   const auto& channels = scene.output.channels;
   if (std::find(channels.begin(), channels.end(), Channel::E) != channels.end() &&
-      !std::isfinite(energy(scene.model, scene.initial)))
-    fail("output.channels: E: the initial energy v0^2/2 - f u0 (3-1) is beyond the double range");
+      !std::isfinite(initial_energy(scene.model, scene.initial)))
+    fail(
+        "output.channels: E: the initial energy v0^2/2 - f(0) u0 (3-1) is beyond the double "
+        "range");
 }
 
 }  // namespace impact

@@ -1,0 +1,84 @@
+#include "impact/event_log.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <variant>
+
+#include "impact/contact.hpp"
+#include "impact/output.hpp"
+
+namespace impact {
+
+bool attach_event_sink(AnyStepper& stepper, const EventSink& sink) {
+  return std::visit([&](auto& s) { return attach_event_sink(s, sink); }, stepper);
+}
+
+EventLog::EventLog(const Model& model, double h, EventSink sink)
+    : force_(model), h_(h), sink_(std::move(sink)) {}
+
+void EventLog::operator()(std::int64_t l, const State& s, const StepInfo& info) {
+  if (l > 0) {
+    constexpr double kEps = std::numeric_limits<double>::epsilon();
+    const bool contact =
+        is_contact_step(force_.model(), s, info.contact_force) &&
+        h_ * info.contact_force > 8 * kEps * (std::fabs(before_.v) + std::fabs(s.v));
+    if (contact) {
+      contact_step(l - 1, s, force_.step_mean(static_cast<double>(l - 1) * h_, h_));
+    } else {
+      if (phase_ == Phase::stuck) sink_({static_cast<double>(l - 1) * h_, EventKind::lift, 0, 0});
+      phase_ = Phase::free;
+    }
+  }
+  before_ = s;
+}
+
+// Step l, from before_ at t_l to `after` at t_{l+1}, is a contact step.
+void EventLog::contact_step(std::int64_t l, const State& after, double mean_force) {
+  const double t = static_cast<double>(l) * h_, rest = h_ * std::fabs(mean_force);
+  if (phase_ == Phase::pending_stick) {
+    sink_({stick_t_, EventKind::stick, 0, 0});
+    phase_ = Phase::stuck;
+  }
+  if (phase_ == Phase::free) {
+    const double s = floor_time(mean_force), v = before_.v + mean_force * s;
+    if (v < 0 && std::fabs(before_.v) > rest) sink_({t + s, EventKind::impact, v, after.v});
+    phase_ = Phase::contact;
+  }
+  if (phase_ == Phase::contact && std::fabs(after.v) <= rest) {
+    stick_t_ = std::fabs(before_.v) <= rest ? t : t + h_;
+    phase_ = Phase::pending_stick;
+  }
+}
+
+// The first root s in [0, h] of d + v s + fbar s^2 / 2 = 0, d = u^l - phi: 2 d / (V - v) with
+// V = sqrt(v^2 - 2 fbar d) (no cancellation); 0 for a particle at or below the floor, h where the
+// flight under fbar does not reach the floor within the step (the scheme's contact came first).
+double EventLog::floor_time(double mean_force) const {
+  const double d = before_.u - force_.model().phi, v = before_.v;
+  if (d <= 0) return 0.0;
+  const double discriminant = v * v - 2 * mean_force * d;
+  if (discriminant < 0) return h_;
+  const double root = 2 * d / (std::sqrt(discriminant) - v);
+  return std::isfinite(root) ? std::clamp(root, 0.0, h_) : h_;
+}
+
+void write_event_header(std::FILE* out) {
+  std::fputs("t,kind,v_before,v_after\n", out);
+}
+
+void write_event(std::FILE* out, const Event& event) {
+  char buf[128];  // three fields of at most 24 characters, a kind and the separators
+  char* p = format_double(buf, buf + sizeof buf, event.t);
+  *p++ = ',';
+  const std::string_view kind = event_name(event.kind);
+  p = std::copy(kind.begin(), kind.end(), p);
+  *p++ = ',';
+  p = format_double(p, buf + sizeof buf, event.v_before);
+  *p++ = ',';
+  p = format_double(p, buf + sizeof buf, event.v_after);
+  *p++ = '\n';
+  std::fwrite(buf, 1, static_cast<std::size_t>(p - buf), out);
+}
+
+}  // namespace impact

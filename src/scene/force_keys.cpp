@@ -1,0 +1,113 @@
+#include "scene/force_keys.hpp"
+
+#include <stdexcept>
+#include <string>
+
+#include "impact/force.hpp"
+#include "scene/toml_text.hpp"
+
+namespace impact {
+namespace {
+
+// The harmonic part of a scene being read: each of its keys creates it, so that the keys can come
+// in any order (check_force() then asks for amplitude and omega).
+Harmonic& harmonic(Scene& s) {
+  if (!s.model.harmonic) s.model.harmonic.emplace();
+  return *s.model.harmonic;
+}
+
+KeyValue harmonic_value(const Scene& s, double Harmonic::*member) {
+  return s.model.harmonic ? KeyValue(*s.model.harmonic.*member) : KeyValue();
+}
+
+const KeySpec kForceKeys[] = {
+    {.table = "force",
+     .key = "f",
+     .type = KeyType::number,
+     .meaning = "the constant part of the body force f(t) of (2-1); 0 without [force] or when "
+                "[force] gives only the others",
+     .get = [](const Scene& s) -> KeyValue { return s.model.f; },
+     .set = [](Scene& s, const KeyValue& v) { s.model.f = std::get<double>(v); }},
+    {.table = "force",
+     .key = "amplitude",
+     .type = KeyType::number,
+     .also = "with force.omega",
+     .meaning = "adds amplitude sin(omega t + phase) to f",
+     .get = [](const Scene& s) { return harmonic_value(s, &Harmonic::amplitude); },
+     .set = [](Scene& s, const KeyValue& v) { harmonic(s).amplitude = std::get<double>(v); }},
+    {.table = "force",
+     .key = "omega",
+     .type = KeyType::number,
+     .range = {.lo = 0.0, .lo_open = true},
+     .also = "with force.amplitude",
+     .meaning = "angular frequency of the harmonic part, rad per unit time",
+     .get = [](const Scene& s) { return harmonic_value(s, &Harmonic::omega); },
+     .set = [](Scene& s, const KeyValue& v) { harmonic(s).omega = std::get<double>(v); }},
+    {.table = "force",
+     .key = "phase",
+     .type = KeyType::number,
+     .also = "with force.amplitude",
+     .meaning = "phase of the harmonic part, rad (0 when left out)",
+     .get = [](const Scene& s) { return harmonic_value(s, &Harmonic::phase); },
+     .set = [](Scene& s, const KeyValue& v) { harmonic(s).phase = std::get<double>(v); }},
+    {.table = "force",
+     .key = "expression",
+     .type = KeyType::text,
+     .also = "at most 4096 characters, not with amplitude, omega or phase, not with method exact",
+     .meaning = "adds a muparser function of t to f, e.g. \"-9.80665 + 14.71 * sin(62.83 * t)\" "
+                "(pi is defined)",
+     .get = [](const Scene& s) -> KeyValue {
+       return s.model.expression.empty() ? KeyValue() : KeyValue(s.model.expression);
+     },
+     .set = [](Scene& s, const KeyValue& v) { s.model.expression = std::get<std::string>(v); }},
+};
+
+constexpr std::string_view kHarmonicKeys[] = {"amplitude", "omega", "phase"};
+
+}  // namespace
+
+std::span<const KeySpec> force_keys() {
+  return kForceKeys;
+}
+
+void check_force(const KeyReader& r, const toml::table& root, const Scene& scene) {
+  const toml::table* force = root.get("force") ? root.get("force")->as_table() : nullptr;
+  if (!force) return;
+  if (force->empty())
+    r.fail_table("force", "[force]",
+                 "the table is empty: give f, or amplitude and omega (and phase), or expression; "
+                 "leave [force] out for f = 0");
+  const auto node = [&](std::string_view key) { return force->get(key); };
+  const toml::node* expression = node("expression");
+  for (std::string_view key : kHarmonicKeys) {
+    if (!node(key)) continue;
+    if (expression)
+      r.fail_value("force", "expression", *expression,
+                   "is exclusive with force." + std::string(key) + " = " + show(*node(key)) +
+                       ": give the harmonic part (amplitude, omega, phase) or an expression, "
+                       "not both");
+    if (key != "amplitude" && !node("amplitude"))
+      r.fail_value("force", key, *node(key),
+                   "given without force.amplitude: the harmonic part amplitude sin(omega t + "
+                   "phase) needs amplitude (finite) and omega (> 0)");
+  }
+  if (node("amplitude") && !node("omega"))
+    r.fail_value("force", "amplitude", *node("amplitude"),
+                 "needs force.omega, the angular frequency in rad per unit time (> 0)");
+  if (!expression) return;
+  if (scene.model.expression.empty())  // ForceFunction reads an empty expression as none
+    r.fail_value("force", "expression", *expression,
+                 "the expression is empty; give a function of t, or leave the key out");
+  try {
+    const ForceFunction evaluated(scene.model);
+  } catch (const std::invalid_argument& e) {
+    r.fail_value("force", "expression", *expression, e.what());
+  }
+  if (std::holds_alternative<ExactParams>(scene.method))
+    r.fail_value("method", "name", *root.get("method")->as_table()->get("name"),
+                 "'exact' has closed-form flights for a constant or harmonic force only, and "
+                 "force.expression is set: use method.name = \"event_driven\", the event-driven "
+                 "reference for any f(t)");
+}
+
+}  // namespace impact

@@ -1,0 +1,216 @@
+// The [force] table: the body force f(t) = f + amplitude sin(omega t + phase), or f + a muparser
+// expression of t, read into Model; each bad input a SceneError naming the file (or the --set),
+// the key, the value and what is allowed.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+#include "cli_support.hpp"
+#include "impact/force.hpp"
+#include "impact/work_energy.hpp"
+#include "scene/read_scene.hpp"
+#include "scene_support.hpp"
+
+namespace {
+
+const std::string kHarmonic = "[force]\nf = -9.80665\namplitude = 14.71\nomega = 62.831853\n";
+
+}  // namespace
+
+TEST_CASE("force: the harmonic keys and the expression are read into Model", "[force]") {
+  impact::Scene s = parse(kBase + kHarmonic + "phase = 0.5\n");
+  CHECK(s.model.f == -9.80665);
+  REQUIRE(s.model.harmonic.has_value());
+  CHECK(s.model.harmonic->amplitude == 14.71);
+  CHECK(s.model.harmonic->omega == 62.831853);
+  CHECK(s.model.harmonic->phase == 0.5);
+  CHECK(s.model.expression.empty());
+
+  // Without f the constant part is 0; without phase the phase is 0.
+  s = parse(kBase + "[force]\namplitude = 2\nomega = 3\n");
+  CHECK(s.model.f == 0.0);
+  REQUIRE(s.model.harmonic.has_value());
+  CHECK(s.model.harmonic->amplitude == 2.0);
+  CHECK(s.model.harmonic->phase == 0.0);
+
+  s = parse(kBase + "[force]\nexpression = \"-9.80665 + 14.71 * sin(62.831853 * t)\"\n");
+  CHECK(s.model.f == 0.0);
+  CHECK_FALSE(s.model.harmonic.has_value());
+  CHECK(s.model.expression == "-9.80665 + 14.71 * sin(62.831853 * t)");
+  // A constant part and an expression add up.
+  s = parse(kBase + "[force]\nf = -1\nexpression = \"cos(t)\"\n");
+  CHECK(s.model.f == -1.0);
+  CHECK(s.model.expression == "cos(t)");
+
+  // A constant force stays a constant: no harmonic part, no expression.
+  s = parse(kBase + "[force]\nf = -9.80665\n");
+  CHECK(impact::constant_force(s.model));
+
+  // --set adds the keys as the file would.
+  s = parse(kBase + "[force]\nf = -9.8\n", {"force.amplitude=1.5", "force.omega=2"});
+  REQUIRE(s.model.harmonic.has_value());
+  CHECK(s.model.harmonic->amplitude == 1.5);
+  s = parse(kBase, {"force.expression=\"2 * t\""});
+  CHECK(s.model.expression == "2 * t");
+}
+
+TEST_CASE("force: the harmonic part needs amplitude and omega > 0, each finite", "[force]") {
+  CHECK_SCENE_ERROR(
+      parse(kBase + "[force]\nf = -9.8\namplitude = 14.71\n"),
+      Contains("scene.toml: force.amplitude = 14.71: needs force.omega") && Contains("> 0"));
+  CHECK_SCENE_ERROR(parse(kBase + "[force]\nomega = 6.0\n"),
+                    Contains("scene.toml: force.omega = 6.0: given without force.amplitude"));
+  CHECK_SCENE_ERROR(parse(kBase + "[force]\nphase = 1.0\n"),
+                    Contains("force.phase = 1.0: given without force.amplitude"));
+  CHECK_SCENE_ERROR(parse(kBase + kHarmonic, {"force.omega=0"}),
+                    Contains("--set force.omega=0: force.omega = 0: must be > 0"));
+  CHECK_SCENE_ERROR(parse(kBase + "[force]\namplitude = 1.0\nomega = -62.8\n"),
+                    Contains("scene.toml: force.omega = -62.8: must be > 0"));
+  CHECK_SCENE_ERROR(parse(kBase + kHarmonic + "phase = nan\n"),
+                    Contains("force.phase = nan: must be a finite number"));
+  CHECK_SCENE_ERROR(parse(kBase + "[force]\namplitude = inf\nomega = 1.0\n"),
+                    Contains("force.amplitude = inf: must be a finite number"));
+  CHECK_SCENE_ERROR(parse(kBase + "[force]\namplitude = -inf\nomega = 1.0\n"),
+                    Contains("force.amplitude = -inf: must be a finite number"));
+  CHECK_SCENE_ERROR(parse(kBase + "[force]\namplitude = 1.0\nomega = 1.0\nphase = \"zero\"\n"),
+                    Contains("force.phase = 'zero': must be a number"));
+}
+
+TEST_CASE("force: an empty [force] table is refused", "[force]") {
+  CHECK_SCENE_ERROR(parse(kBase + "[force]\n"),
+                    Contains("scene.toml: [force]: the table is empty") &&
+                        Contains("give f, or amplitude and omega") && Contains("expression"));
+}
+
+TEST_CASE("force: an expression is exclusive with the harmonic keys", "[force]") {
+  for (const std::string key : {"amplitude = 1.0\n", "omega = 2.0\n", "phase = 0.0\n"})
+    CHECK_SCENE_ERROR(
+        parse(kBase + "[force]\nexpression = \"sin(t)\"\n" + key),
+        Contains("scene.toml: force.expression = 'sin(t)': is exclusive with force.") &&
+            Contains("not both"));
+  CHECK_SCENE_ERROR(parse(kBase + "[force]\nexpression = \"sin(t)\"\n", {"force.omega=3"}),
+                    Contains("is exclusive with force.omega = 3"));
+}
+
+TEST_CASE("force: an expression that is empty, too long or not evaluable at t = 0", "[force]") {
+  CHECK_SCENE_ERROR(parse(kBase + "[force]\nexpression = \"\"\n"),
+                    Contains("scene.toml: force.expression = '': the expression is empty"));
+  CHECK_SCENE_ERROR(parse(kBase + "[force]\nexpression = \"   \"\n"),
+                    Contains("the expression is empty"));
+  CHECK_SCENE_ERROR(parse(kBase + "[force]\nexpression = 3.0\n"),
+                    Contains("force.expression = 3.0: must be a string"));
+
+  // 4096 characters are allowed, 4097 are not; the message shows the start of the value only.
+  std::string sum = "t";
+  while (sum.size() < 4095) sum += "+t";
+  REQUIRE(sum.size() == 4095);
+  CHECK(parse(kBase + "[force]\nexpression = \"" + sum + " \"\n").model.expression.size() == 4096);
+  const std::string message = scene_error(kBase + "[force]\nexpression = \"" + sum + "+t\"\n");
+  CHECK_THAT(message, Contains("force.expression = 't+t+t") &&
+                          Contains("has 4097 characters; at most 4096 are allowed"));
+  CHECK(message.size() < 600);
+
+  // muparser's position is 1-based in the message: "sin(t" ends at 5, "2 * x" has x at 5.
+  CHECK_SCENE_ERROR(
+      parse(kBase + "[force]\nexpression = \"sin(t\"\n"),
+      Contains("force.expression = 'sin(t'") && Contains("does not parse at position"));
+  CHECK_SCENE_ERROR(parse(kBase + "[force]\nexpression = \"2 * x\"\n"),
+                    Contains("force.expression = '2 * x': the expression does not parse at "
+                             "position 5") &&
+                        Contains("the variable is t"));
+  CHECK_SCENE_ERROR(parse(kBase + "[force]\nexpression = \"1 / t\"\n"),
+                    Contains("force.expression = '1 / t': the expression is inf at t = 0"));
+  CHECK_SCENE_ERROR(parse(kBase + "[force]\nexpression = \"sqrt(t - 1)\"\n"),
+                    Contains("nan at t = 0; it must be finite"));
+  CHECK_SCENE_ERROR(parse(kBase, {"force.expression=\"log(t)\""}),
+                    Contains("--set force.expression=\"log(t)\": force.expression = 'log(t)'") &&
+                        Contains("at t = 0"));
+}
+
+TEST_CASE("force: exact with an expression force points to event_driven", "[force]") {
+  CHECK_SCENE_ERROR(
+      parse(with_method("[method]\nname = \"exact\"\n") +
+            "[force]\nexpression = \"-9.8 + sin(t)\"\n"),
+      Contains("scene.toml: method.name = 'exact'") && Contains("method.name = \"event_driven\""));
+  CHECK_SCENE_ERROR(
+      parse(kBase + "[force]\nexpression = \"-9.8\"\n", {"method.name=exact"}),
+      Contains("--set method.name=exact: method.name = 'exact'") && Contains("event_driven"));
+  // A harmonic force is exact's.
+  CHECK(parse(with_method("[method]\nname = \"exact\"\n") + kHarmonic).model.harmonic.has_value());
+}
+
+namespace {
+
+// E(T) - E(0) of WorkEnergy along a trajectory sampled on t_l = l h, l = 0..n.
+template <class Trajectory>
+double energy_drift(const impact::Model& model, double h, std::int64_t n, Trajectory at) {
+  impact::WorkEnergy work(model, at(0.0), h);
+  const double E0 = work.energy(at(0.0));
+  for (std::int64_t l = 1; l <= n; ++l) work.step(l, at(static_cast<double>(l) * h));
+  return work.energy(at(static_cast<double>(n) * h)) - E0;
+}
+
+}  // namespace
+
+TEST_CASE("force: E is v^2/2 - f u bit for bit for a constant force", "[force]") {
+  impact::Model model;
+  model.f = -9.80665;
+  model.phi = 0.25;
+  impact::WorkEnergy work(model, {5.0, -1.0}, 1e-3);
+  for (std::int64_t l = 1; l <= 1000; ++l) {
+    const impact::State s{5.0 - 1e-3 * static_cast<double>(l) + 1e-7 * static_cast<double>(l * l),
+                          std::sin(static_cast<double>(l))};
+    work.step(l, s);
+    if (work.energy(s) != impact::energy(model, s)) FAIL("E differs at l = " << l);
+  }
+  CHECK(impact::initial_energy(model, {5.0, -1.0}) == impact::energy(model, {5.0, -1.0}));
+}
+
+TEST_CASE("force: E with a harmonic force is conserved to second order, through an elastic impact",
+          "[force]") {
+  impact::Model model;
+  model.f = -9.80665;
+  model.harmonic = impact::Harmonic{4.0, 7.0, 0.3};
+  const impact::ForceFunction force(model);
+  // One elastic impact at t* = 0.3 with speed V = 5 on the floor u = 0: the flights before and
+  // after it in closed form (ForceFunction::flight, backwards in time before t*). Both stay above
+  // the floor on [0, 0.6]: |u''| <= 13.8 cannot stop a speed of 5 within 0.3.
+  const double t_star = 0.3, V = 5.0, T = 0.6;
+  const auto bouncing = [&](double t) {
+    return force.flight({0.0, t < t_star ? -V : V}, t_star, t);
+  };
+  // Free flight only (the same force, no impact) for comparison.
+  const auto flying = [&](double t) { return force.flight({1.0, 2.0}, 0.0, t); };
+  // The bound of work_energy.hpp: h^2 (T sup|f'| sup|u''| + sup|f'| |jump of v|), with
+  // sup|f'| = amplitude omega = 28 and sup|u''| = |f| + amplitude = 13.8.
+  const double fprime = 28.0, accel = 13.80665;
+  for (double h : {1e-2, 5e-3, 2.5e-3}) {
+    const auto n = static_cast<std::int64_t>(std::llround(T / h));
+    const double free_drift = energy_drift(model, h, n, flying);
+    const double impact_drift = energy_drift(model, h, n, bouncing);
+    INFO("h = " << h << ": free " << free_drift << ", with the impact " << impact_drift);
+    CHECK(std::fabs(free_drift) <= h * h * T * fprime * accel);
+    CHECK(std::fabs(impact_drift) <= h * h * (T * fprime * accel + fprime * 2 * V));
+    // Halving h divides the free-flight drift by 4 (second order), to within 10%.
+    const double half = energy_drift(model, h / 2, 2 * n, flying);
+    CHECK(free_drift / half == Approx(4.0).epsilon(0.1));
+  }
+  // What v^2/2 - f(t) u does instead: it drifts by O(1) over the run.
+  const impact::State end = bouncing(T), start = bouncing(0.0);
+  CHECK(std::fabs((0.5 * end.v * end.v - force.at(T) * end.u) -
+                  (0.5 * start.v * start.v - force.at(0.0) * start.u)) > 0.1);
+}
+
+TEST_CASE("force: an expression force that turns non-finite during the run exits 1 naming t",
+          "[force]") {
+  TempDir dir;
+  dir.write("s.toml", kShort +
+                          "[force]\nexpression = \"sqrt(0.05 - t)\"\n[output]\nchannels = "
+                          "[\"u\", \"v\", \"E\"]\n");
+  CHECK_FAILS_CLEANLY(dir, "run s.toml -o out.csv", 1,
+                      Contains("the force expression is") && Contains("nan at t = 0.05") &&
+                          Contains("(no output file written)"));
+  CHECK_FAILS_CLEANLY(dir, "run s.toml -o out.csv --events events.csv", 1,
+                      Contains("nan at t = 0.05") && Contains("(no output file written)"));
+}
