@@ -242,7 +242,7 @@ TEST_CASE("force: a harmonic scene runs with each method, first impact where the
             "[force]\nf = -9.80665\namplitude = 5.0\nomega = 10.0\n"
             "[time]\nT = 1.0\nh = 1e-4\n[method]\nname = \"direct\"\n"
             "[output]\nchannels = [\"u\", \"v\", \"E\"]\nevery = 100\n");
-  for (const std::string method : {"direct", "fb_newton", "moreau_jean", "penalty"}) {
+  for (const std::string method : {"direct", "fb_newton", "moreau_jean", "penalty", "exact"}) {
     INFO(method);
     const std::string cor = method == "penalty" ? " --unset floor.cor" : "";
     const Result r = dir.run(
