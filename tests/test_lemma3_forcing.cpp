@@ -137,15 +137,15 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "C55: Lemma 1 with f(t): s L E(s) = E(0) fails for E = v^2/2 - f(t) u of an elastic motion; "
-    "the work-corrected W satisfies it",
+    "C55: Lemma 1 with f(t): s L E(s) = E(0) fails for E = v^2/2 - f(t) u of an elastic motion, "
+    "and E can grow with COR < 1; the work-corrected W is kept, and only falls at impacts",
     "[claim][lemma3_forcing]") {
   // The exact elastic solution sampled at h = 1e-3 (energy_forcing.hpp). With a constant force
   // (a = 0) E is conserved and the check is round-off. W's samples carry the error of the work sum
   // sum f^l (u^{l+1} - u^l) against int f v, O(h^2) = 1e-6 of W(0) at most: 1e-5 allows ten times
   // that; E's deviation is O(a u / E(0)), tenths.
   const auto exact = [](double a) {
-    return lemma1_forcing(a, 10.0, ExactParams{}, kLemma1S, kLemma1SchemeT);
+    return lemma1_forcing(a, 10.0, 1.0, ExactParams{}, kLemma1S, kLemma1SchemeT);
   };
   const Lemma1Forcing control = exact(0.0), forced = exact(5.0);
   INFO("exact, a = 0: E " << control.energy << ", W " << control.work);
@@ -156,12 +156,25 @@ TEST_CASE(
   CHECK(forced.energy > 0.1);
   CHECK(forced.energy_constant > 0.01);
   CHECK(forced.work < 1e-5);
+  CHECK(forced.work_max_rise < 1e-5);
+
+  // Section 1, "if 0 <= COR < 1 ... energy decreases": with COR 0.75 and a = 30 m/s^2 (above
+  // gravity: the force lifts the particle off the floor) E ends at ten times E(0); W only falls.
+  const Lemma1Forcing driven =
+      lemma1_forcing(30.0, 10.0, 0.75, ExactParams{}, kLemma1S, kLemma1SchemeT);
+  INFO("exact, COR 0.75, a = 30: E change " << driven.energy_final_change << ", W change "
+                                            << driven.work_final_change << ", W rise "
+                                            << driven.work_max_rise);
+  CHECK(driven.energy_final_change > 1);
+  CHECK(driven.work_final_change < 0);
+  CHECK(driven.work_max_rise < 1e-5);
 
   // The direct scheme with COR = 1 loses O(h) of the energy at each impact, so even with a = 0 the
   // check deviates, by 1.6e-3; against that scale E with f(t) deviates tens of times more, W not.
   const Lemma1Forcing scheme_control =
-      lemma1_forcing(0.0, 10.0, DirectParams{}, kLemma1S, kLemma1SchemeT);
-  const Lemma1Forcing scheme = lemma1_forcing(5.0, 10.0, DirectParams{}, kLemma1S, kLemma1SchemeT);
+      lemma1_forcing(0.0, 10.0, 1.0, DirectParams{}, kLemma1S, kLemma1SchemeT);
+  const Lemma1Forcing scheme =
+      lemma1_forcing(5.0, 10.0, 1.0, DirectParams{}, kLemma1S, kLemma1SchemeT);
   // For a = 0, W = E up to the rounding of the summed work.
   CHECK(scheme_control.work == Approx(scheme_control.energy).epsilon(1e-9));
   CHECK(scheme.energy > 50 * scheme_control.energy);

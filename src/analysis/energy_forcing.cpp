@@ -79,13 +79,19 @@ double relative_change(const std::vector<double>& x) {
   return (x.back() - x.front()) / std::fabs(x.front());
 }
 
+double largest_rise(const std::vector<double>& x) {
+  double rise = 0;
+  for (std::size_t l = 0; l + 1 < x.size(); ++l) rise = std::fmax(rise, x[l + 1] - x[l]);
+  return rise / std::fabs(x.front());
+}
+
 }  // namespace
 
-Lemma1Forcing lemma1_forcing(double amplitude, double omega, const MethodParams& method,
+Lemma1Forcing lemma1_forcing(double amplitude, double omega, double cor, const MethodParams& method,
                              std::span<const double> s_values, double T) {
   Model model;
   model.f = -9.80665;
-  model.cor = 1.0;
+  model.cor = cor;
   if (amplitude != 0) model.harmonic = Harmonic{amplitude, omega, 0.0};
   const ForceFunction force(model);
   const State initial{1.0, 0.0};
@@ -109,6 +115,8 @@ Lemma1Forcing lemma1_forcing(double amplitude, double omega, const MethodParams&
   r.work = max_laplace_deviation(work, grid.h, s_values);
   r.work_final_change = relative_change(work);
   r.energy_final_change = relative_change(energy);
+  r.work_max_rise = largest_rise(work);
+  r.energy_max_rise = largest_rise(energy);
   return r;
 }
 

@@ -75,12 +75,13 @@ struct Lemma1Forcing {
   double energy_constant = 0;                             // (v^l)^2/2 - f u^l, f the constant part
   double work = 0;                                        // W^l
   double work_final_change = 0, energy_final_change = 0;  // (X^n - X^0) / |X^0|
+  double work_max_rise = 0, energy_max_rise = 0;  // max_l (X^{l+1} - X^l) / |X^0|, 0 if none
 };
-// The case: u0 = 1 m, v0 = 0, phi = 0, f = -9.80665 + amplitude sin(omega t), the method with
-// COR = 1 (direct's v^{l+1} = -v^l on a contact step: no energy lost at impacts wherever they
-// fall, up to the O(h) work of the step) at h = kLemma1ForcingH.
+// The case: u0 = 1 m, v0 = 0, phi = 0, f = -9.80665 + amplitude sin(omega t), the method with the
+// COR (1: elastic; direct's v^{l+1} = -v^l on a contact step loses no energy wherever the impact
+// falls, up to the O(h) work of the step) at h = kLemma1ForcingH.
 inline constexpr double kLemma1ForcingH = 1e-3;
-Lemma1Forcing lemma1_forcing(double amplitude, double omega, const MethodParams& method,
+Lemma1Forcing lemma1_forcing(double amplitude, double omega, double cor, const MethodParams& method,
                              std::span<const double> s_values, double T);
 
 }  // namespace impact
