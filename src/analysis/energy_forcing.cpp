@@ -8,6 +8,7 @@
 #include "analysis/laplace.hpp"
 #include "analysis/tolerances.hpp"
 #include "impact/run.hpp"
+#include "impact/work_energy.hpp"
 
 namespace impact {
 
@@ -98,14 +99,12 @@ Lemma1Forcing lemma1_forcing(double amplitude, double omega, double cor, const M
   const Grid grid = Grid::covering(T, kLemma1ForcingH);
   AnyStepper stepper = make_stepper(model, grid.h, method);
   std::vector<double> energy, energy_constant, work;
-  double done = force.at(0) * initial.u;  // f(0) u^0 + sum_{k<l} f^k (u^{k+1} - u^k)
-  State previous = initial;
+  WorkEnergy work_energy(model, initial, grid.h);
   simulate(stepper, initial, grid, [&](std::int64_t l, const State& s, const StepInfo&) {
-    if (l > 0) done += force.step_mean(grid.t(l - 1), grid.h) * (s.u - previous.u);
-    previous = s;
+    if (l > 0) work_energy.step(l, s);
     energy.push_back(0.5 * s.v * s.v - force.at(grid.t(l)) * s.u);
     energy_constant.push_back(0.5 * s.v * s.v - model.f * s.u);
-    work.push_back(0.5 * s.v * s.v - done);
+    work.push_back(work_energy.energy(s));
   });
   Lemma1Forcing r;
   r.amplitude = amplitude;
