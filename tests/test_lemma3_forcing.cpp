@@ -7,6 +7,7 @@
 #include <numbers>
 #include <vector>
 
+#include "analysis/bounds.hpp"
 #include "analysis/energy_forcing.hpp"
 #include "analysis/lemma1.hpp"
 #include "analysis/lemma3_forcing.hpp"
@@ -58,6 +59,26 @@ TEST_CASE("force_norms: sup, int |f| and rms of a harmonic force in closed form"
   CHECK(c.integral == 2 * 9.80665);
   // The bound with F = 0 is |v^0|, the constant-force lemma for f = 0.
   CHECK(lemma3_velocity_bound(0.0, 0.0, State{1.0, -3.0}, 2.0) == 3.0);
+}
+
+TEST_CASE("with a constant force every reading is the lemma as printed (bounds.hpp)",
+          "[lemma3_forcing]") {
+  for (double f : {-9.80665, -1.0, 0.0, 1.0})
+    for (double u0 : {0.0, 5.0}) {
+      const ForcingCase c{f, 0.0, 1.0, 0.0, u0, -3.0, 1e-2, "direct"};
+      const ForcingRun run = run_forcing_case(c);
+      const Lemma3Bounds printed = lemma3_bounds(c.model(), State{u0, -3.0}, run.T);
+      INFO("f = " << f << ", u0 = " << u0);
+      for (std::size_t i = 0; i < kForceReadings.size(); ++i) {
+        INFO(reading_name(kForceReadings[i]));
+        // The same formula evaluated from the same numbers, the norms of a constant force being
+        // |f| (T |f| for the integral, divided by T again): a few ulp.
+        CHECK(run.readings[i].velocity ==
+              Approx(run.max_v / printed.velocity).epsilon(1e-14).margin(1e-300));
+        CHECK(run.readings[i].displacement ==
+              Approx(run.max_u / printed.displacement).epsilon(1e-14).margin(1e-300));
+      }
+    }
 }
 
 TEST_CASE(
