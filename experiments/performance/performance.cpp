@@ -4,6 +4,7 @@
 //                              direct, moreau_jean, fb_newton, penalty (per grid step and per ODE
 //                              step) and exact (the closed-form reference sampled on the grid)
 //   exact_impacts              ns per impact of the exact solution (impact time and speed)
+//   impacts/..., stepper/.../table_period1, ...   the time-dependent force (performance_forced.hpp)
 //   ensemble/<method>/<isa>    particle-steps per second of the vectorised ensemble
 //   cli/<method>/<scene>/<n>   `impact run` as a user runs it: a process, a scene file, n steps,
 //                              CSV output decimated to about 10^4 rows; CPU time of the child
@@ -36,6 +37,7 @@
 #include "impact/output.hpp"
 #include "impact/registry.hpp"
 #include "impact/run.hpp"
+#include "performance_forced.hpp"
 #include "scene/read_scene.hpp"
 
 extern char** environ;
@@ -261,7 +263,8 @@ struct Quantity {
 
 Quantity quantity_of(const std::string& name) {
   if (name.rfind("ensemble", 0) == 0) return {"particle_steps_per_s", "particle-steps/s", 1.0};
-  if (name == "exact_impacts") return {"s_per_impact", "ns/impact", 1e9};
+  if (name == "exact_impacts" || name.rfind("impacts/", 0) == 0)
+    return {"s_per_impact", "ns/impact", 1e9};
   if (name == "cli_rows") return {"s_per_step", "ns/row", 1e9};
   return {"s_per_step", "ns/step", 1e9};
 }
@@ -358,6 +361,7 @@ int main(int argc, char** argv) {
   for (const char* stepper : {"rk8pd", "msbdf"})
     register_stepper(PenaltyParams{1e6, stepper, 1e-8, 1e-10}, "figure3/no_cor", 1e-3, stepper);
   register_exact_impacts();
+  register_forced_benchmarks(&add_statistics);
   for (const auto isa : Ensemble::supported_instruction_sets()) {
     for (const bool settled : {false, true}) {
       register_ensemble(EnsembleMethod::direct, "direct", std::string(isa), settled);

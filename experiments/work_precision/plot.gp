@@ -188,7 +188,7 @@ do for [format in "png svg"] {
   set logscale y
   set autoscale xy
   set ytics autofreq
-  set key top left Left reverse font ",9" box opaque
+  set key top left Left reverse font ",9" box opaque title ""
   set arrow 1 from lyapunov_T, graph 0 to lyapunov_T, graph 1 nohead dt 2 lc rgb "#D55E00"
   set arrow 2 from 1 / lyapunov_lambda, graph 0 to 1 / lyapunov_lambda, graph 1 nohead dt 3 lc rgb "#000000"
   plot results.'/lyapunov.csv' skip 1 using 1:($2 > 0 ? $2 : NaN) with lines lw 1 lc rgb "#999999" title "distance", \
@@ -231,10 +231,10 @@ do for [format in "png svg"] {
     panel = 0
     do for [mode = 1:nrow] {
       set xlabel mode == 1 ? "CPU time of the solve [s]" : mode == 2 ? "step h [s]" : \
-          "penalty: tolerance rtol = atol"
+          "tolerance rtol = atol (penalty, LSODAR)"
       # The tolerances span 8 decades: a label every second one.
       if (mode == 3) { set xtics 100 } else { set xtics autofreq }
-      against = mode == 1 ? "CPU time" : mode == 2 ? "the step h" : "the tolerance (penalty)"
+      against = mode == 1 ? "CPU time" : mode == 2 ? "the step h" : "the tolerance"
       row = mode
       do for [m in measures] {
         panel = panel + 1

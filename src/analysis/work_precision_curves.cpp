@@ -47,6 +47,10 @@ const std::vector<WorkPrecisionScene>& work_precision_scenes() {
       {"figure4_cor075", "figure4", "cor075.toml", "Figure 4: f = -9.80665, COR = 0.75", true},
       {"offgrid_no_cor", "work_precision", "offgrid.toml",
        "off-grid: f = 0, no COR, impact at t = pi", false},
+      {"table_period1", "work_precision", "table_period1.toml",
+       "vibrating table, period 1: {/Symbol G} = 1.3, e = 0.5", true, true},
+      {"table_chaotic", "work_precision", "table_chaotic.toml",
+       "vibrating table, chaotic: {/Symbol G} = 5, e = 0.5, T = 1 s", true, true},
   };
   return scenes;
 }
