@@ -159,3 +159,35 @@ TEST_CASE("events: --events is written whole or not at all, and not over --out",
   CHECK(events[0].kind == EventKind::impact);
   CHECK(events[0].t == Approx(0.05).epsilon(1e-12));
 }
+
+TEST_CASE("events: --events shows a particle at rest that a harmonic force lifts", "[events]") {
+  // At rest on the floor under f(t) = -g + 2 g sin(2 pi t): it sticks from t = 0 while f <= 0 and
+  // lifts where f turns positive, at t* = asin(1/2) / (2 pi) = 1/12 (measured: 0.0833 for the
+  // time-steppers, 1/12 to 1e-17 for exact).
+  TempDir dir;
+  dir.write("lift.toml",
+            "[initial]\nu0 = 0.0\nv0 = 0.0\n[floor]\ncor = 0.0\n"
+            "[force]\nf = -9.80665\namplitude = 19.6133\nomega = 6.283185307179586\n"
+            "[time]\nT = 2.0\nh = 1e-4\n[method]\nname = \"direct\"\n");
+  for (const std::string method : {"direct", "moreau_jean", "exact"}) {
+    INFO(method);
+    const Result r =
+        dir.run("run lift.toml -q -o /dev/null --events - --set method.name=" + method);
+    REQUIRE(r.code == 0);
+    const auto events = read_events(r.out);
+    REQUIRE(events.size() >= 5);
+    CHECK(events[0].kind == EventKind::stick);
+    CHECK(events[0].t == 0.0);
+    CHECK(events[1].kind == EventKind::lift);
+    // A time-stepper's first free step starts within a step of t* (its mean force turns positive
+    // there); exact finds the zero of f itself, to its root solver's tolerance.
+    CHECK(std::fabs(events[1].t - 1.0 / 12) <= (method == "exact" ? 1e-12 : 1e-4));
+    // It lands at t = 0.8248 (exact) with COR 0, and rests until f turns positive again at 13/12.
+    CHECK(events[2].kind == EventKind::impact);
+    CHECK(std::fabs(events[2].t - 0.8248126) <= 1e-4);
+    CHECK(events[2].v_after == 0.0);
+    CHECK(events[3].kind == EventKind::stick);
+    CHECK(events[4].kind == EventKind::lift);
+    CHECK(std::fabs(events[4].t - 13.0 / 12) <= (method == "exact" ? 1e-12 : 1e-4));
+  }
+}

@@ -215,6 +215,9 @@ TEST_CASE("force: an expression force that turns non-finite during the run exits
                           Contains("(no output file written)"));
   CHECK_FAILS_CLEANLY(dir, "run s.toml -o out.csv --events events.csv", 1,
                       Contains("nan at t = 0.05") && Contains("(no output file written)"));
+  // exact refuses the expression before any output, pointing to event_driven.
+  CHECK_FAILS_CLEANLY(dir, "run s.toml -o out.csv --set method.name=exact", 2,
+                      Contains("use method.name = \"event_driven\""));
   // Without E, each time-stepper meets it in its own step (penalty inside its ODE driver).
   for (const std::string method : {"direct", "fb_newton", "moreau_jean", "penalty"})
     CHECK_FAILS_CLEANLY(dir, "run s.toml -o out.csv --unset output --set method.name=" + method, 1,
@@ -258,4 +261,23 @@ TEST_CASE("force: a harmonic scene runs with each method, first impact where the
     CHECK(std::fabs(std::stod(events.substr(line)) - first_impact) <= 1e-4);
     CHECK(slurp(dir / "rows.csv").rfind("t,u,v,E\n", 0) == 0);
   }
+}
+
+TEST_CASE("force: the sweep's E_T is impact run's last E, bit for bit, with a harmonic force",
+          "[force]") {
+  TempDir dir;
+  dir.write("s.toml",
+            "[initial]\nu0 = 0.5\nv0 = 0.0\n[floor]\ncor = 0.5\n"
+            "[force]\nf = -9.80665\namplitude = 5.0\nomega = 10.0\n"
+            "[time]\nT = 1.0\nh = 1e-3\n[method]\nname = \"direct\"\n"
+            "[output]\nchannels = [\"E\"]\nevery = 1000\n");
+  const Result sweep = dir.run("sweep s.toml --vary force.amplitude=5 --summary E_T -q");
+  REQUIRE(sweep.code == 0);
+  const Result run = dir.run("run s.toml -q");
+  REQUIRE(run.code == 0);
+  // The last rows: "5,<E_T>," and "1,<E>".
+  const std::string e_t = sweep.out.substr(sweep.out.rfind("\n5,") + 3);
+  const std::string e = run.out.substr(run.out.rfind("\n1,") + 3);
+  CHECK(e_t.substr(0, e_t.find(',')) + "\n" == e);
+  CHECK(e.find("nan") == std::string::npos);
 }

@@ -21,7 +21,8 @@ struct QuantityInfo {
 constexpr QuantityInfo kQuantities[] = {
     {Quantity::u_T, "u_T", "u at the last grid time (T when h divides T)"},
     {Quantity::v_T, "v_T", "v at the last grid time"},
-    {Quantity::E_T, "E_T", "energy v^2/2 - f u (3-1) at the last grid time"},
+    {Quantity::E_T, "E_T",
+     "energy v^2/2 - f u (3-1) at the last grid time (with f(t), the E channel's)"},
     {Quantity::contact_steps, "contact_steps",
      "steps with N^l > u^{l+1} - phi: (4-3)'s force branch"},
     {Quantity::impacts, "impacts", "contact episodes before rest (all of them without rest)"},

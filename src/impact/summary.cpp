@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "impact/work_energy.hpp"
+
 namespace impact {
 
 PointSummary finish_summary(const SummaryLanes<double>& lanes, const Model& model, const Grid& grid,
@@ -24,17 +26,26 @@ PointSummary finish_summary(const SummaryLanes<double>& lanes, const Model& mode
 PointOutcome summarize(const Scene& scene, bool against_exact) {
   AnyStepper stepper = make_stepper(scene);
   SummaryObserver summary(scene.model, scene.grid);
-  if (!against_exact) {
-    const RunSummary run = simulate(stepper, scene.initial, scene.grid, summary);
-    return {summary.result(run), std::nullopt};
+  // A time-dependent force's E^n is that of the E channel, v^2/2 - f(0) u(0) - W (work_energy.hpp),
+  // summed over the same steps, so that the sweep's E_T is impact run's last E bit for bit.
+  std::optional<WorkEnergy> work;
+  if (!constant_force(scene.model)) work.emplace(scene.model, scene.initial, scene.grid.h);
+  std::optional<ErrorObserver> errors;
+  if (against_exact) errors.emplace(scene.model, scene.initial, scene.grid);
+  RunSummary run;
+  if (!work && !errors) {
+    run = simulate(stepper, scene.initial, scene.grid, summary);
+  } else {
+    run = simulate(stepper, scene.initial, scene.grid,
+                   [&](std::int64_t l, const State& s, const StepInfo& info) {
+                     summary(l, s, info);
+                     if (work && l > 0) work->step(l, s);
+                     if (errors) (*errors)(l, s, info);
+                   });
   }
-  ErrorObserver errors(scene.model, scene.initial, scene.grid);
-  const RunSummary run = simulate(stepper, scene.initial, scene.grid,
-                                  [&](std::int64_t l, const State& s, const StepInfo& info) {
-                                    summary(l, s, info);
-                                    errors(l, s, info);
-                                  });
-  return {summary.result(run), errors.result(run)};
+  PointSummary result = summary.result(run);
+  if (work) result.energy_final = work->energy(result.final);
+  return {result, errors ? std::optional<ErrorNorms>(errors->result(run)) : std::nullopt};
 }
 
 std::optional<EnsembleKind> ensemble_kind(const Scene& scene) {

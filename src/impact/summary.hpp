@@ -20,8 +20,8 @@ namespace impact {
 
 struct PointSummary {
   State final;  // u^n, v^n at T
-  // E^n (3-1), v^2/2 - f u, defined for a constant force; NaN for a time-dependent one, which
-  // conserves no such energy between impacts.
+  // E^n (3-1), v^2/2 - f u, for a constant force; for a time-dependent one, v^2/2 - f(0) u(0) - W
+  // (work_energy.hpp), set by summarize(); NaN where nothing set it.
   double energy_final = std::numeric_limits<double>::quiet_NaN();
   std::int64_t contact_steps = 0;
   std::int64_t impacts = 0;  // contact episodes before rest (all of them without rest)
