@@ -70,12 +70,17 @@ pid_t spawn(const std::vector<std::string>& args, const std::string& cwd) {
   return pid;
 }
 
-// Whether a temporary `X.csv.tmp.*` appears in `dir` within `seconds`.
-bool temporary_appears(const TempDir& dir, double seconds) {
+// Whether a temporary `X.csv.tmp.*` (and `E.csv.tmp.*` when `events`) appears in `dir` within
+// `seconds`.
+bool temporary_appears(const TempDir& dir, double seconds, bool events = false) {
   const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
   while (std::chrono::steady_clock::now() < end) {
-    for (const auto& name : dir.entries())
-      if (name.rfind("X.csv.tmp.", 0) == 0) return true;
+    bool rows = false, event_rows = !events;
+    for (const auto& name : dir.entries()) {
+      rows = rows || name.rfind("X.csv.tmp.", 0) == 0;
+      event_rows = event_rows || name.rfind("E.csv.tmp.", 0) == 0;
+    }
+    if (rows && event_rows) return true;
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
   return false;
@@ -113,6 +118,26 @@ TEST_CASE("output paths: every signal that ends a run removes the temporary", "[
     CHECK(WTERMSIG(status) == sig);
     CHECK(dir.entries() == std::set<std::string>{"X.csv"});
     CHECK(slurp(dir / "X.csv") == "an earlier result\n");
+  }
+}
+
+TEST_CASE("output paths: a signal removes both temporaries, the rows' and the events'",
+          "[output]") {
+  for (int sig : {SIGINT, SIGTERM}) {
+    INFO("signal " << sig << " (" << strsignal(sig) << ")");
+    TempDir dir;
+    const pid_t pid =
+        spawn({"run", kFigure3, "--set", "time.T=100", "--set", "time.h=1e-9", "--set",
+               "output.every=1000000000", "-q", "-o", "X.csv", "--events", "E.csv"},
+              dir.path());
+    const bool started = temporary_appears(dir, 30.0, true);
+    kill(pid, started ? sig : SIGKILL);
+    int status = 0;
+    REQUIRE(waitpid(pid, &status, 0) == pid);
+    REQUIRE(started);
+    CHECK(WIFSIGNALED(status));
+    CHECK(WTERMSIG(status) == sig);
+    CHECK(dir.entries().empty());
   }
 }
 
