@@ -69,7 +69,8 @@ std::string_view channel_meaning(Channel c) {
     case Channel::N:
       return "the contact impulse over (t_{l-1}, t_l] divided by h, N^{l-1} of (4-1)";
     case Channel::E:
-      return "energy v^2/2 - f u, (3-1)";
+      return "energy v^2/2 - f u, (3-1); with a time-dependent force v^2/2 - f(0) u(0) - W(t), W "
+             "the work of f so far";
     case Channel::iterations:
       return "Newton or ODE-driver iterations of the step";
   }
