@@ -11,7 +11,8 @@
 # Usage: gnuplot -e "results='results/vibrating_table'" experiments/vibrating_table/plot.gp
 if (!exists("results")) results = 'results/vibrating_table'
 set datafile separator ','
-diagram = results.'/diagram.csv'
+diagram = results.'/diagram_exact.csv'
+steppers = results.'/diagram_steppers.csv'
 thresholds = results.'/thresholds.csv'
 trajectories = results.'/trajectories.csv'
 regimes = results.'/regimes.csv'
@@ -80,10 +81,10 @@ do for [format in "png pdf"] {
     do for [method in "direct moreau_jean"] {
       eval thresholds_marks(ee)
       set title sprintf("%s, e = %s", method, e) noenhanced
-      plot diagram skip 1 using (pick("exact", ee, "up", "impact")):7 with dots lc rgb gray title "exact", \
-           diagram skip 1 using (pick("exact", ee, "down", "impact")):7 with dots lc rgb gray notitle, \
-           diagram skip 1 using (pick_h(method, 1e-3, ee, "impact")):7 with points pt 7 ps 0.15 lc rgb orange title "h = 10^{-3} s", \
-           diagram skip 1 using (pick_h(method, 1e-4, ee, "impact")):7 with points pt 7 ps 0.15 lc rgb blue title "h = 10^{-4} s", \
+      plot diagram skip 1 using (pick("exact", ee, "up", "impact")):7 with points pt 7 ps 0.3 lc rgb gray title "exact", \
+           diagram skip 1 using (pick("exact", ee, "down", "impact")):7 with points pt 7 ps 0.3 lc rgb gray notitle, \
+           steppers skip 1 using (pick_h(method, 1e-3, ee, "impact")):7 with points pt 7 ps 0.15 lc rgb orange title "h = 10^{-3} s", \
+           steppers skip 1 using (pick_h(method, 1e-4, ee, "impact")):7 with points pt 7 ps 0.15 lc rgb blue title "h = 10^{-4} s", \
            stable(ee, x) with lines lw 1.5 lc rgb "black" title "period 1 (closed form)"
     }
   }

@@ -8,6 +8,7 @@
 #include <toml++/toml.h>
 
 #include <array>
+#include <cstddef>
 #include <string_view>
 
 #include "analysis/experiment.hpp"
@@ -22,6 +23,8 @@ inline constexpr double kTableExactGammaStep = 0.01, kTableStepperGammaStep = 0.
 // Table periods per value of Gamma in a diagram, and how many of them are the transient: the
 // sweep continues from the previous attractor, so a short transient suffices away from thresholds.
 inline constexpr int kTableDiagramPeriods = 60, kTableDiagramTransient = 40;
+// Events drawn per value of Gamma: a chatter's dozens of impacts at one phase need no more.
+inline constexpr std::size_t kTableDiagramEvents = 64;
 // The exact solution is sampled every 1/16 period (its events do not depend on the samples).
 inline constexpr double kTableExactStep = 0.1 / 16;
 inline constexpr std::array<std::string_view, 2> kTableSteppers{"direct", "moreau_jean"};
