@@ -10,6 +10,7 @@
 #include <numbers>
 #include <string>
 
+#include "analysis/reference.hpp"
 #include "analysis/vibrating_table.hpp"
 #include "analysis/vibrating_table_theory.hpp"
 
@@ -137,4 +138,20 @@ TEST_CASE(
       CHECK(std::fabs(shift(0)) > 5 * std::fabs(shift(3)));
     }
   }
+}
+
+TEST_CASE("vibrating table: the thresholds match experiments/vibrating_table/reference.toml",
+          "[vibrating_table][regression]") {
+  // The driver's threshold tables, recomputed (the diagrams are not: they take most of its time
+  // and no claim reads them). Within 1e-9 of max(1, |reference|) (ReferenceRule): every number is
+  // a bisection, a fit or a crossing over runs of regular orbits, reproducible to rounding. The
+  // message of a failed run of exact (a string) is compared as it is: a change of exact shows.
+  toml::table measured{
+      {"vibrating_table", toml::table{{"e_0_5", table_thresholds_summary(thresholds(0.5))},
+                                      {"e_0_8", table_thresholds_summary(thresholds(0.8))}}}};
+  ReferenceRule rule;
+  rule.measured_keys_only = true;
+  for (const std::string& difference :
+       compare_with_reference(measured, read_reference(IMPACT_SOURCE_DIR, "vibrating_table"), rule))
+    FAIL_CHECK(difference);
 }
