@@ -8,11 +8,13 @@
 #include <limits>
 #include <map>
 #include <numbers>
+#include <sstream>
 #include <string>
 
 #include "analysis/reference.hpp"
 #include "analysis/vibrating_table.hpp"
 #include "analysis/vibrating_table_theory.hpp"
+#include "cli_support.hpp"
 
 using namespace impact;
 
@@ -154,4 +156,40 @@ TEST_CASE("vibrating table: the thresholds match experiments/vibrating_table/ref
   for (const std::string& difference :
        compare_with_reference(measured, read_reference(IMPACT_SOURCE_DIR, "vibrating_table"), rule))
     FAIL_CHECK(difference);
+}
+
+TEST_CASE(
+    "vibrating table: impact run of experiments/vibrating_table/period_one.toml with exact bounces "
+    "once every table period at the orbit's take-off speed",
+    "[vibrating_table][cli]") {
+  using impact::testing::TempDir;
+  TempDir dir;
+  const std::string scene =
+      std::string(IMPACT_SOURCE_DIR) + "/experiments/vibrating_table/period_one.toml";
+  const impact::testing::Result r =
+      dir.run("run " + impact::testing::quote(scene) + " -q -o rows.csv --events events.csv");
+  REQUIRE(r.code == 0);
+  std::istringstream events(impact::testing::slurp(dir / "events.csv"));
+  std::string line;
+  std::getline(events, line);
+  REQUIRE(line == "t,kind,v_before,v_after");
+  // The scene's decimals are the orbit's (Gamma = 1.3, e = 0.5) to 17 digits: impact k at t = k/10
+  // and take-off 2 pi e/(1 + e) g/omega; Brent's rounding of each impact time (a few ulp) and
+  // the 17-digit data keep both within 1e-12.
+  const double takeoff = 2 * std::numbers::pi * 0.5 / 1.5 * kTableGravity / kTableOmega;
+  int k = 0;
+  while (std::getline(events, line)) {
+    ++k;
+    INFO(line);
+    std::istringstream row(line);
+    std::string t, kind, before, after;
+    std::getline(row, t, ',');
+    std::getline(row, kind, ',');
+    std::getline(row, before, ',');
+    std::getline(row, after, ',');
+    CHECK(kind == "impact");
+    CHECK(std::stod(t) == Approx(0.1 * k).margin(1e-12));
+    CHECK(std::stod(after) == Approx(takeoff).epsilon(1e-12));
+  }
+  CHECK(k == 19);  // T = 1.95 s: the impacts at 0.1 ... 1.9 s
 }
