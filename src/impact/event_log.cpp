@@ -37,8 +37,12 @@ void EventLog::operator()(std::int64_t l, const State& s, const StepInfo& info) 
 void EventLog::contact_step(std::int64_t l, const State& after, double mean_force) {
   const double t = static_cast<double>(l) * h_, rest = h_ * std::fabs(mean_force);
   if (phase_ == Phase::pending_stick) {
-    sink_({stick_t_, EventKind::stick, 0, 0});
-    phase_ = Phase::stuck;
+    if (std::fabs(after.v) <= rest) {
+      sink_({stick_t_, EventKind::stick, 0, 0});
+      phase_ = Phase::stuck;
+      return;
+    }
+    phase_ = Phase::contact;  // v passed through 0 inside a compliant contact (penalty)
   }
   if (phase_ == Phase::free) {
     const double s = floor_time(mean_force), v = before_.v + mean_force * s;

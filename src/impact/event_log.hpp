@@ -11,8 +11,9 @@
 //    [0, h] (the free flight under the step's mean force: exact for a scheme that flies in closed
 //    form under a constant f), v_before the velocity there, v_after = v^{l+1};
 //  - a stick is a contact step that ends at rest, |v^{l+1}| <= h |fbar_l| (less than one step of
-//    the body force), followed by another contact step; it is dated t_l if the step started at
-//    rest too, else t_{l+1} (v_before = v_after = 0);
+//    the body force), followed by another such step (a compliant contact, penalty's, passes v = 0
+//    in one step at its deepest point); it is dated t_l if the step started at rest too, else
+//    t_{l+1} (v_before = v_after = 0);
 //  - a lift is the first free step after a stick, dated t_l, the last time the particle was held.
 #pragma once
 
