@@ -2,7 +2,6 @@
 
 #include <stdexcept>
 #include <string>
-#include <variant>
 
 #include "impact/force.hpp"
 
@@ -10,18 +9,6 @@ namespace impact {
 
 std::string_view reference_method(const Model& model) {
   return model.expression.empty() ? "exact" : "event_driven";
-}
-
-bool attach_event_sink(AnyStepper& stepper, EventSink sink) {
-  return std::visit(
-      [&](auto& s) {
-        if constexpr (requires { s.set_event_sink(std::move(sink)); }) {
-          s.set_event_sink(std::move(sink));
-          return true;
-        }
-        return false;
-      },
-      stepper);
 }
 
 std::int64_t count_impacts(const Scene& scene) {

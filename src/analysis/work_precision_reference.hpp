@@ -16,6 +16,7 @@
 
 #include "impact/contact.hpp"
 #include "impact/error_norms.hpp"
+#include "impact/event_log.hpp"
 #include "impact/events.hpp"
 #include "impact/model.hpp"
 #include "impact/registry.hpp"
@@ -26,10 +27,6 @@ namespace impact {
 
 // The method whose run is the reference for this force: "exact" or "event_driven".
 std::string_view reference_method(const Model& model);
-
-// Hands `sink` to a stepper that logs its events (set_event_sink: exact, event_driven); false,
-// and nothing done, for one that does not.
-bool attach_event_sink(AnyStepper& stepper, EventSink sink);
 
 // The impacts of one run of the scene (its method, grid), from the stepper's event log; 0 for a
 // stepper without one.
