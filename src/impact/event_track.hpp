@@ -22,9 +22,15 @@
 //
 // Time is absolute here (the force depends on it); at(t) and advance() must be called with
 // non-decreasing t. Events go to the sink in increasing t as the track passes them.
+// The same event logic follows an expression force with OdeLaw (ode_flight.hpp, the method
+// event_driven): EventTrackOf<Law> takes the flights, the lift-off times, the resting impulse and
+// the chatter window from its Law and keeps the impacts, sticks and lifts itself.
 #pragma once
 
+#include <cmath>
 #include <optional>
+#include <stdexcept>
+#include <utility>
 
 #include "impact/events.hpp"
 #include "impact/flight_search.hpp"
@@ -35,11 +41,12 @@ namespace impact {
 // The relative impact speed below which a chatter is cut off (see above).
 inline constexpr double kChatterCutoff = 1e-8;
 
-class EventTrack {
+template <class Law>
+class EventTrackOf {
  public:
-  // From (t0, initial). Throws std::invalid_argument for an expression force (its reference is the
-  // method event_driven), non-finite data, u0 < phi or a COR outside [0, 1].
-  EventTrack(const Model& model, const State& initial, double t0);
+  // From (t0, initial). Throws std::invalid_argument for non-finite data, u0 < phi or a COR outside
+  // [0, 1].
+  EventTrackOf(Law law, const Model& model, const State& initial, double t0);
 
   void set_event_sink(EventSink sink) { sink_ = std::move(sink); }
 
@@ -51,15 +58,19 @@ class EventTrack {
   // The flight that holds the state at t, when no event lies between the last call and t: a
   // sample is then flight->at(t, sin, cos) of its theta(t), as the caller can compute it. nullptr
   // otherwise (call advance()).
-  const HarmonicFlight* free_flight_until(double t) const {
-    return resting_ || t > certified_ || (contact_ && t >= contact_->t) ? nullptr : &flight_;
+  const HarmonicFlight* free_flight_until(double t) const requires requires(const Law& law) {
+    law.flight();
+  }
+  {
+    return resting_ || t > law_.certified() || (contact_ && t >= contact_->t) ? nullptr
+                                                                              : &law_.flight();
   }
 
   // False once a contact search stalled or exceeded its step budget (the state is then unreliable).
   bool converged() const { return converged_; }
   // W of the last chatter cut-off (see above), 0 when there was none.
   double chatter_window() const { return chatter_window_; }
-  double phi() const { return model_.phi; }
+  double phi() const { return phi_; }
   // The time of the first impact passed so far.
   std::optional<double> first_impact() const { return first_impact_; }
 
@@ -67,15 +78,11 @@ class EventTrack {
   void start_flight(double t, double v, bool at_crossing = false);
   void impact(const Contact& c, double& impulse);
   void settle(double t);
-  bool chatter_certified(double t, double V);
   void emit(double t, EventKind kind, double v_before, double v_after) const;
 
-  Model model_;
-  ForceBounds bounds_;
-  double e_;
+  Law law_;
+  double phi_, e_;
   EventSink sink_;
-  HarmonicFlight flight_;
-  double certified_ = 0;  // no contact of the current flight in [start, certified_)
   std::optional<Contact> contact_;
   std::optional<double> first_impact_;
   bool resting_ = false;
@@ -83,5 +90,118 @@ class EventTrack {
   double max_speed_ = 0, chatter_window_ = 0;
   bool converged_ = true;
 };
+
+// The exact solution for a constant or harmonic force. Throws std::invalid_argument for an
+// expression force (its reference is the method event_driven).
+class EventTrack : public EventTrackOf<ClosedFormLaw> {
+ public:
+  EventTrack(const Model& model, const State& initial, double t0);
+};
+
+template <class Law>
+EventTrackOf<Law>::EventTrackOf(Law law, const Model& model, const State& initial, double t0)
+    : law_(std::move(law)), phi_(model.phi), e_(model.cor.value_or(1.0)), t_now_(t0) {
+  if (!std::isfinite(model.phi) || !std::isfinite(model.f) || !std::isfinite(initial.u) ||
+      !std::isfinite(initial.v) || !std::isfinite(t0))
+    throw std::invalid_argument("exact: phi, f, u0, v0 and t0 must be finite");
+  if (!(e_ >= 0.0 && e_ <= 1.0)) throw std::invalid_argument("exact: COR must be in [0, 1]");
+  if (initial.u < model.phi) throw std::invalid_argument("exact: u0 must be >= phi, (2-2)");
+  law_.start(t0, initial.u - model.phi, initial.v, false);
+}
+
+template <class Law>
+void EventTrackOf<Law>::emit(double t, EventKind kind, double v_before, double v_after) const {
+  if (sink_) sink_(Event{t, kind, v_before, v_after});
+}
+
+template <class Law>
+void EventTrackOf<Law>::start_flight(double t, double v, bool at_crossing) {
+  resting_ = false;
+  contact_.reset();
+  law_.start(t, 0.0, v, at_crossing);
+}
+
+// On the floor with v = 0 at t: N = -f(t) >= 0 holds it there while f <= 0 (2-2); a force that is
+// zero and falling holds it too, one that is positive lifts it at once, and so does one whose
+// upward zero crossing is t itself to rounding (lift_time(t) == t).
+template <class Law>
+void EventTrackOf<Law>::settle(double t) {
+  const double f = law_.force(t);
+  if (f > 0.0 || (f == 0.0 && law_.rate(t) > 0.0)) {
+    start_flight(t, 0.0);
+    return;
+  }
+  const double lift = law_.lift_time(t);
+  if (lift == t) {
+    start_flight(t, 0.0, true);
+    return;
+  }
+  resting_ = true;
+  contact_.reset();
+  rest_start_ = t;
+  lift_ = lift;
+  emit(t, EventKind::stick, 0.0, 0.0);
+}
+
+template <class Law>
+void EventTrackOf<Law>::impact(const Contact& c, double& impulse) {
+  contact_.reset();
+  const double V = -c.v;
+  if (V > 0.0) {
+    max_speed_ = std::fmax(max_speed_, V);
+    if (!first_impact_) first_impact_ = c.t;
+    double after = e_ * V;
+    if (after > 0.0 && e_ < 1.0 && V < kChatterCutoff * max_speed_) {
+      if (const auto W = law_.chatter_window(c.t, V, e_)) {
+        after = 0.0;
+        chatter_window_ = *W;
+      }
+    }
+    emit(c.t, EventKind::impact, -V, after);
+    impulse += after + V;
+    if (after > 0.0) {
+      start_flight(c.t, after);
+      return;
+    }
+  }
+  settle(c.t);
+}
+
+template <class Law>
+State EventTrackOf<Law>::advance(double t, double& impulse) {
+  // Certified search steps allowed per call: a flight takes tens (each step covers a fixed fraction
+  // of the distance to the floor or more), so this is only reached by a search that stalls.
+  long budget = 1'000'000;
+  for (;;) {
+    if (resting_) {
+      const double from = std::fmax(t_now_, rest_start_);
+      if (lift_ > t) {
+        impulse += law_.rest_impulse(from, t);
+        t_now_ = t;
+        return {phi_, 0.0};
+      }
+      impulse += law_.rest_impulse(from, lift_);
+      t_now_ = lift_;
+      emit(lift_, EventKind::lift, 0.0, 0.0);
+      start_flight(lift_, 0.0, true);
+    }
+    if (!contact_ && law_.certified() <= t) {
+      contact_ = law_.search(t, budget);
+      if (budget <= 0) {
+        converged_ = false;
+        if (!contact_) law_.give_up_until(t);
+      }
+    }
+    if (contact_ && contact_->t <= t) {
+      t_now_ = contact_->t;
+      impact(*contact_, impulse);
+      continue;
+    }
+    t_now_ = t;
+    const State g = law_.at(t);
+    // In flight the exact gap is >= 0; only rounding next to a contact can make it negative.
+    return {phi_ + std::fmax(g.u, 0.0), g.v};
+  }
+}
 
 }  // namespace impact

@@ -24,32 +24,6 @@ double amplitude(const Model& model) {
   return model.harmonic ? model.harmonic->amplitude : 0.0;
 }
 
-struct GapAt {
-  const HarmonicFlight* flight;
-  static double gap(double t, void* self) { return static_cast<GapAt*>(self)->flight->at(t).u; }
-};
-
-// The root of the gap in [lo, hi], where it decreases strictly from g(lo) > 0 to g(hi) <= 0.
-double refine_root(const HarmonicFlight& flight, double lo, double hi) {
-  GslErrorsAsStatus quiet;
-  GapAt self{&flight};
-  gsl_function F{&GapAt::gap, &self};
-  const std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> solver(
-      gsl_root_fsolver_alloc(gsl_root_fsolver_brent), &gsl_root_fsolver_free);
-  if (!solver || gsl_root_fsolver_set(solver.get(), &F, lo, hi) != GSL_SUCCESS) return hi;
-  for (int i = 0; i < kMaxBrentIterations; ++i) {
-    if (gsl_root_fsolver_iterate(solver.get()) != GSL_SUCCESS) break;
-    lo = gsl_root_fsolver_x_lower(solver.get());
-    hi = gsl_root_fsolver_x_upper(solver.get());
-    if (gsl_root_test_interval(lo, hi, 0.0, 2 * std::numeric_limits<double>::epsilon()) ==
-        GSL_SUCCESS)
-      break;
-  }
-  // The upper end: the gap there is <= 0 up to rounding, so the contact is never placed before the
-  // floor is reached.
-  return hi;
-}
-
 }  // namespace
 
 HarmonicFlight::HarmonicFlight(const Model& model, double t_a, double gap_a, double v_a)
@@ -91,40 +65,28 @@ double force_rate(const Model& model, double t) {
   return a * w.omega * std::cos(w.omega * t + w.phase);
 }
 
-std::optional<Contact> search_contact(const HarmonicFlight& flight, const ForceBounds& bounds,
-                                      double& certified, double horizon, long& budget) {
-  const double B = bounds.B;
-  while (certified <= horizon && budget > 0) {
-    --budget;
-    const double t = certified;
-    const State s = flight.at(t);
-    const double g = s.u, v = s.v;
-    if (g <= 0.0 && v <= 0.0) return Contact{t, v};  // on (or, by rounding, below) the floor
-    if (v < 0.0 && v * v >= 2 * B * g) {
-      // One root in [t, t + s_up], where g decreases strictly (flight_search.hpp).
-      const double s_up = 2 * g / (-v + std::sqrt(std::fma(v, v, -2 * B * g)));
-      const double hi = t + s_up;
-      const State end = flight.at(hi);
-      if (end.u <= 0.0) {
-        const double root = refine_root(flight, t, hi);
-        return Contact{root, std::fmin(flight.at(root).v, 0.0)};
-      }
-      // Rounding kept the gap at t + s_up positive: no root before it either.
-      certified = hi > t ? hi : std::nextafter(t, kInfinity);
-      continue;
-    }
-    const double gp = std::fmax(g, 0.0);
-    if (B == 0.0) {
-      if (v >= 0.0) certified = kInfinity;  // no force: a rising or resting particle never returns
-      continue;
-    }
-    const double root = std::sqrt(std::fma(v, v, 2 * B * gp));
-    const double step = v >= 0.0 ? (v + root) / B : 2 * gp / (root - v);
-    if (!(t + step > t)) return Contact{t, std::fmin(v, 0.0)};  // stalled: a touch at rounding
-    certified = t + step;
+namespace detail {
+
+double refine_root(double (*gap)(double, void*), void* path, double lo, double hi) {
+  GslErrorsAsStatus quiet;
+  gsl_function F{gap, path};
+  const std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> solver(
+      gsl_root_fsolver_alloc(gsl_root_fsolver_brent), &gsl_root_fsolver_free);
+  if (!solver || gsl_root_fsolver_set(solver.get(), &F, lo, hi) != GSL_SUCCESS) return hi;
+  for (int i = 0; i < kMaxBrentIterations; ++i) {
+    if (gsl_root_fsolver_iterate(solver.get()) != GSL_SUCCESS) break;
+    lo = gsl_root_fsolver_x_lower(solver.get());
+    hi = gsl_root_fsolver_x_upper(solver.get());
+    if (gsl_root_test_interval(lo, hi, 0.0, 2 * std::numeric_limits<double>::epsilon()) ==
+        GSL_SUCCESS)
+      break;
   }
-  return std::nullopt;
+  // The upper end: the gap there is <= 0 up to rounding, so the contact is never placed before the
+  // floor is reached.
+  return hi;
 }
+
+}  // namespace detail
 
 double zero_speed_departure(const Model& model, const ForceBounds& bounds, double t,
                             bool at_crossing) {
@@ -147,6 +109,37 @@ double lift_time(const Model& model, double t) {
   const double crossing = std::asin(-model.f / a), two_pi = 2 * std::numbers::pi;
   const double n = std::ceil((w.omega * t + psi - crossing) / two_pi);
   return std::fmax(t, (crossing + two_pi * n - psi) / w.omega);
+}
+
+void ClosedFormLaw::start(double t, double gap, double v, bool at_crossing) {
+  flight_ = HarmonicFlight(model_, t, gap, v);
+  certified_ = t;
+  if (gap == 0.0 && v == 0.0) certified_ += zero_speed_departure(model_, bounds_, t, at_crossing);
+}
+
+double ClosedFormLaw::rest_impulse(double a, double b) const {
+  if (!(b > a)) return 0.0;
+  double value = -model_.f * (b - a);
+  if (model_.harmonic && model_.harmonic->amplitude != 0.0) {
+    // cos(x) - cos(y) = 2 sin((x + y)/2) sin((y - x)/2), without cancellation for short rests.
+    const Harmonic& w = *model_.harmonic;
+    const double mid = w.omega * (a + b) / 2 + w.phase, half = w.omega * (b - a) / 2;
+    value -= w.amplitude / w.omega * 2 * std::sin(mid) * std::sin(half);
+  }
+  return value;
+}
+
+std::optional<double> ClosedFormLaw::chatter_window(double t, double V, double e) const {
+  const double g = -force(t);
+  if (!(g > 0.0)) return std::nullopt;
+  const double W0 = 4 * e * V / (g * (1 - e));
+  const double g_min = g - bounds_.C * W0, g_max = g + bounds_.C * W0;
+  if (!(g_min > 0.0)) return std::nullopt;
+  const double rho = e * std::sqrt(g_max / g_min);
+  if (!(rho < 1.0)) return std::nullopt;
+  const double W = 2 * e * V / (g_min * (1 - rho));
+  if (!(W <= W0)) return std::nullopt;
+  return W;
 }
 
 }  // namespace impact

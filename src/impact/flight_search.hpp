@@ -20,6 +20,8 @@
 // g(t + s) >= f' s^3 / 6 - D s^4 / 24 > 0 for s < 4 f' / D when f(t) = 0 < f'(t) (a lift-off).
 #pragma once
 
+#include <cmath>
+#include <limits>
 #include <optional>
 
 #include "impact/model.hpp"
@@ -60,11 +62,52 @@ struct Contact {
   double v = 0;  // the velocity there, <= 0
 };
 
+namespace detail {
+// The root of path.at(t).u in [lo, hi], where it decreases strictly from > 0 to <= 0 (GSL Brent).
+double refine_root(double (*gap)(double, void*), void* path, double lo, double hi);
+}  // namespace detail
+
 // Advances the certificate `certified` (no contact in [anchor, certified)) by certified steps until
-// it passes `horizon` or the first contact is found, which it returns. At most `budget` steps;
-// budget is decreased by the steps taken (a stalled search uses it up; the caller reports it).
-std::optional<Contact> search_contact(const HarmonicFlight& flight, const ForceBounds& bounds,
-                                      double& certified, double horizon, long& budget);
+// it passes `horizon` or the first contact is found, which it returns; B bounds |f| over the
+// stretch searched. At most `budget` steps; budget is decreased by the steps taken (a stalled
+// search uses it up; the caller reports it). Path: State at(double t) const, the gap and velocity.
+template <class Path>
+std::optional<Contact> search_contact(const Path& path, double B, double& certified, double horizon,
+                                      long& budget) {
+  constexpr double kInfinity = std::numeric_limits<double>::infinity();
+  while (certified <= horizon && budget > 0) {
+    --budget;
+    const double t = certified;
+    const State s = path.at(t);
+    const double g = s.u, v = s.v;
+    if (g <= 0.0 && v <= 0.0) return Contact{t, v};  // on (or, by rounding, below) the floor
+    if (v < 0.0 && v * v >= 2 * B * g) {
+      // One root in [t, t + s_up], where g decreases strictly (see above).
+      const double s_up = 2 * g / (-v + std::sqrt(std::fma(v, v, -2 * B * g)));
+      const double hi = t + s_up;
+      if (path.at(hi).u <= 0.0) {
+        const auto gap = [](double x, void* self) {
+          return static_cast<const Path*>(self)->at(x).u;
+        };
+        const double root = detail::refine_root(gap, const_cast<Path*>(&path), t, hi);
+        return Contact{root, std::fmin(path.at(root).v, 0.0)};
+      }
+      // Rounding kept the gap at t + s_up positive: no root before it either.
+      certified = hi > t ? hi : std::nextafter(t, kInfinity);
+      continue;
+    }
+    const double gp = std::fmax(g, 0.0);
+    if (B == 0.0) {
+      if (v >= 0.0) certified = kInfinity;  // no force: a rising or resting particle never returns
+      continue;
+    }
+    const double root = std::sqrt(std::fma(v, v, 2 * B * gp));
+    const double step = v >= 0.0 ? (v + root) / B : 2 * gp / (root - v);
+    if (!(t + step > t)) return Contact{t, std::fmin(v, 0.0)};  // stalled: a touch at rounding
+    certified = t + step;
+  }
+  return std::nullopt;
+}
 
 // The certified first stretch of a flight that leaves the floor at t with zero speed (see above):
 // 0 when neither bound certifies one, infinity when the force can never bring it back. At a
@@ -80,5 +123,39 @@ double lift_time(const Model& model, double t);
 // f(t) and f'(t).
 double force_at(const Model& model, double t);
 double force_rate(const Model& model, double t);
+
+// The flights of a constant or harmonic force for EventTrack (event_track.hpp): closed form,
+// searched with the global bounds above; the chatter window is certified with C = |A| omega.
+class ClosedFormLaw {
+ public:
+  explicit ClosedFormLaw(const Model& model) : model_(model), bounds_(model) {}
+
+  // A flight from (t, gap, v); a zero-speed start on the floor is certified by
+  // zero_speed_departure().
+  void start(double t, double gap, double v, bool at_crossing);
+  std::optional<Contact> search(double horizon, long& budget) {
+    return search_contact(flight_, bounds_.B, certified_, horizon, budget);
+  }
+  State at(double t) const { return flight_.at(t); }
+  // No contact of the current flight in [start, certified()).
+  double certified() const { return certified_; }
+  void give_up_until(double t) { certified_ = t; }
+
+  double force(double t) const { return force_at(model_, t); }
+  double rate(double t) const { return force_rate(model_, t); }
+  double lift_time(double t) const { return impact::lift_time(model_, t); }
+  // -(integral of f over [a, b]): the impulse N = -f delivers while the particle rests (2-1).
+  double rest_impulse(double a, double b) const;
+  // The window W of event_track.hpp for an impact of speed V at t, if certified.
+  std::optional<double> chatter_window(double t, double V, double e) const;
+
+  const HarmonicFlight& flight() const { return flight_; }
+
+ private:
+  Model model_;
+  ForceBounds bounds_;
+  HarmonicFlight flight_;
+  double certified_ = 0;
+};
 
 }  // namespace impact
