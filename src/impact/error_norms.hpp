@@ -1,6 +1,5 @@
 // Error norms of a time-stepper against the exact event-driven solution, accumulated while the run
-// streams (no trajectory is stored). The reference is ExactSolution's closed form for a constant
-// force and the event-driven EventTrack for a harmonic one, sampled in order.
+// streams (no trajectory is stored), against the reference of ReferenceSolution below.
 #pragma once
 
 #include <cmath>
@@ -8,8 +7,10 @@
 #include <limits>
 
 #include "impact/contact.hpp"
+#include "impact/event_track.hpp"
 #include "impact/exact.hpp"
 #include "impact/model.hpp"
+#include "impact/ode_flight.hpp"
 #include "impact/run.hpp"
 
 namespace impact {
@@ -25,30 +26,36 @@ struct ErrorNorms {
   RunSummary run;
 };
 
-// The exact solution at the grid times, in increasing order, for any force the exact references
-// cover; impact_time(1) of a time-dependent force is known once the samples have passed it.
+// The exact solution at the grid times, in increasing order, for any force: ExactSolution's closed
+// form for a constant one, EventTrack for a harmonic one and the method event_driven's ODE track
+// (default tolerances) for an expression; impact_time(1) of a time-dependent force is known once
+// the samples have passed it.
 class ReferenceSolution {
  public:
   ReferenceSolution(const Model& model, const State& initial) : initial_(initial) {
     if (constant_force(model))
       closed_form_.emplace(model, initial);
-    else
+    else if (model.expression.empty())
       track_.emplace(model, initial, 0.0);
+    else
+      ode_track_.emplace(OdeLaw(model, OdeSettings{}), model, initial, 0.0);
   }
   State at(double t) {
     if (closed_form_) return closed_form_->at(t);
     if (!(t > 0)) return initial_;  // an impact at 0+ shows from the first step on (exact.hpp)
     double impulse = 0;
-    return track_->advance(t, impulse);
+    return track_ ? track_->advance(t, impulse) : ode_track_->advance(t, impulse);
   }
   std::optional<double> first_impact() const {
-    return closed_form_ ? closed_form_->impact_time(1) : track_->first_impact();
+    if (closed_form_) return closed_form_->impact_time(1);
+    return track_ ? track_->first_impact() : ode_track_->first_impact();
   }
 
  private:
   State initial_;
   std::optional<ExactSolution> closed_form_;
   std::optional<EventTrack> track_;
+  std::optional<EventTrackOf<OdeLaw>> ode_track_;
 };
 
 // Accumulates the norms as a run streams (an observer for simulate()), so that other observers can

@@ -86,7 +86,8 @@ class EventTrackOf {
   std::optional<Contact> contact_;
   std::optional<double> first_impact_;
   bool resting_ = false;
-  double rest_start_ = 0, lift_ = 0, t_now_ = 0;
+  Lift lift_;
+  double rest_start_ = 0, t_now_ = 0;
   double max_speed_ = 0, chatter_window_ = 0;
   bool converged_ = true;
 };
@@ -131,8 +132,8 @@ void EventTrackOf<Law>::settle(double t) {
     start_flight(t, 0.0);
     return;
   }
-  const double lift = law_.lift_time(t);
-  if (lift == t) {
+  const Lift lift = law_.lift_after(t);
+  if (lift.crossing && lift.t == t) {
     start_flight(t, 0.0, true);
     return;
   }
@@ -175,15 +176,16 @@ State EventTrackOf<Law>::advance(double t, double& impulse) {
   for (;;) {
     if (resting_) {
       const double from = std::fmax(t_now_, rest_start_);
-      if (lift_ > t) {
+      while (!lift_.crossing && lift_.t <= t && budget-- > 0) lift_ = law_.lift_after(lift_.t);
+      if (lift_.t > t || !lift_.crossing) {
         impulse += law_.rest_impulse(from, t);
         t_now_ = t;
         return {phi_, 0.0};
       }
-      impulse += law_.rest_impulse(from, lift_);
-      t_now_ = lift_;
-      emit(lift_, EventKind::lift, 0.0, 0.0);
-      start_flight(lift_, 0.0, true);
+      impulse += law_.rest_impulse(from, lift_.t);
+      t_now_ = lift_.t;
+      emit(lift_.t, EventKind::lift, 0.0, 0.0);
+      start_flight(lift_.t, 0.0, true);
     }
     if (!contact_ && law_.certified() <= t) {
       contact_ = law_.search(t, budget);

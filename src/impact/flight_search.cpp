@@ -129,17 +129,26 @@ double ClosedFormLaw::rest_impulse(double a, double b) const {
   return value;
 }
 
-std::optional<double> ClosedFormLaw::chatter_window(double t, double V, double e) const {
-  const double g = -force(t);
-  if (!(g > 0.0)) return std::nullopt;
-  const double W0 = 4 * e * V / (g * (1 - e));
-  const double g_min = g - bounds_.C * W0, g_max = g + bounds_.C * W0;
+double chatter_trial_window(double e, double V, double g) {
+  return 4 * e * V / (g * (1 - e));
+}
+
+std::optional<double> chatter_window_within(double e, double V, double W0, double g_min,
+                                            double g_max) {
   if (!(g_min > 0.0)) return std::nullopt;
   const double rho = e * std::sqrt(g_max / g_min);
   if (!(rho < 1.0)) return std::nullopt;
   const double W = 2 * e * V / (g_min * (1 - rho));
   if (!(W <= W0)) return std::nullopt;
   return W;
+}
+
+std::optional<double> ClosedFormLaw::chatter_window(double t, double V, double e) const {
+  const double g = -force(t);
+  if (!(g > 0.0)) return std::nullopt;
+  // |g'| <= C over the window: g stays within C W0 of g(t).
+  const double W0 = chatter_trial_window(e, V, g);
+  return chatter_window_within(e, V, W0, g - bounds_.C * W0, g + bounds_.C * W0);
 }
 
 }  // namespace impact

@@ -68,14 +68,16 @@ double refine_root(double (*gap)(double, void*), void* path, double lo, double h
 }  // namespace detail
 
 // Advances the certificate `certified` (no contact in [anchor, certified)) by certified steps until
-// it passes `horizon` or the first contact is found, which it returns; B bounds |f| over the
-// stretch searched. At most `budget` steps; budget is decreased by the steps taken (a stalled
-// search uses it up; the caller reports it). Path: State at(double t) const, the gap and velocity.
+// it passes `horizon` or reaches `end` or the first contact is found, which it returns; B bounds
+// |f| over [certified, end]. At most `budget` steps; budget is decreased by the steps taken (a
+// stalled search uses it up; the caller reports it). Path: State at(double t) const, the gap and
+// velocity.
 template <class Path>
 std::optional<Contact> search_contact(const Path& path, double B, double& certified, double horizon,
-                                      long& budget) {
+                                      long& budget,
+                                      double end = std::numeric_limits<double>::infinity()) {
   constexpr double kInfinity = std::numeric_limits<double>::infinity();
-  while (certified <= horizon && budget > 0) {
+  while (certified <= horizon && certified < end && budget > 0) {
     --budget;
     const double t = certified;
     const State s = path.at(t);
@@ -84,7 +86,7 @@ std::optional<Contact> search_contact(const Path& path, double B, double& certif
     if (v < 0.0 && v * v >= 2 * B * g) {
       // One root in [t, t + s_up], where g decreases strictly (see above).
       const double s_up = 2 * g / (-v + std::sqrt(std::fma(v, v, -2 * B * g)));
-      const double hi = t + s_up;
+      const double hi = std::fmin(t + s_up, end);
       if (path.at(hi).u <= 0.0) {
         const auto gap = [](double x, void* self) {
           return static_cast<const Path*>(self)->at(x).u;
@@ -92,7 +94,7 @@ std::optional<Contact> search_contact(const Path& path, double B, double& certif
         const double root = detail::refine_root(gap, const_cast<Path*>(&path), t, hi);
         return Contact{root, std::fmin(path.at(root).v, 0.0)};
       }
-      // Rounding kept the gap at t + s_up positive: no root before it either.
+      // The gap is still positive at hi (at end, or at t + s_up by rounding): no root before it.
       certified = hi > t ? hi : std::nextafter(t, kInfinity);
       continue;
     }
@@ -104,7 +106,7 @@ std::optional<Contact> search_contact(const Path& path, double B, double& certif
     const double root = std::sqrt(std::fma(v, v, 2 * B * gp));
     const double step = v >= 0.0 ? (v + root) / B : 2 * gp / (root - v);
     if (!(t + step > t)) return Contact{t, std::fmin(v, 0.0)};  // stalled: a touch at rounding
-    certified = t + step;
+    certified = std::fmin(t + step, end);
   }
   return std::nullopt;
 }
@@ -120,9 +122,24 @@ double zero_speed_departure(const Model& model, const ForceBounds& bounds, doubl
 // when f + |A| <= 0 (it never lifts).
 double lift_time(const Model& model, double t);
 
+// Where a resting particle lifts off, as a law finds it: at `t` when `crossing`, else not before t
+// (a law that scans f by samples says how far it looked; the track asks again from there).
+struct Lift {
+  double t = 0;
+  bool crossing = true;
+};
+
 // f(t) and f'(t).
 double force_at(const Model& model, double t);
 double force_rate(const Model& model, double t);
+
+// The chatter window W = 2 e V / (g_min (1 - rho)), rho = e sqrt(g_max / g_min), of
+// event_track.hpp for an impact of speed V, given the range [g_min, g_max] of -f over the trial
+// window W0 = 4 e V / (g (1 - e)) (chatter_trial_window): nullopt unless g_min > 0, rho < 1 and
+// W <= W0, so that the window the bound speaks of lies inside the one the range was taken over.
+double chatter_trial_window(double e, double V, double g);
+std::optional<double> chatter_window_within(double e, double V, double W0, double g_min,
+                                            double g_max);
 
 // The flights of a constant or harmonic force for EventTrack (event_track.hpp): closed form,
 // searched with the global bounds above; the chatter window is certified with C = |A| omega.
@@ -143,7 +160,7 @@ class ClosedFormLaw {
 
   double force(double t) const { return force_at(model_, t); }
   double rate(double t) const { return force_rate(model_, t); }
-  double lift_time(double t) const { return impact::lift_time(model_, t); }
+  Lift lift_after(double t) const { return {impact::lift_time(model_, t), true}; }
   // -(integral of f over [a, b]): the impulse N = -f delivers while the particle rests (2-1).
   double rest_impulse(double a, double b) const;
   // The window W of event_track.hpp for an impact of speed V at t, if certified.

@@ -24,6 +24,9 @@ const MethodInfo kMethods[] = {
     {"penalty", true, false, "normal compliance N = c_N max(phi - u, 0), GSL odeiv2",
      PenaltyParams{}},
     {"exact", false, true, "event-driven closed-form solution sampled on t = l h", ExactParams{}},
+    {"event_driven", false, true,
+     "event-driven solution for any f(t): GSL odeiv2 rk8pd between certified impacts",
+     EventDrivenParams{}},
 };
 static_assert(std::size(kMethods) == std::variant_size_v<MethodParams>);
 
@@ -62,6 +65,7 @@ AnyStepper make_stepper(const Model& model, double h, const MethodParams& params
         if constexpr (std::is_same_v<Params, MoreauJeanParams>) return MoreauJean(model, h, p);
         if constexpr (std::is_same_v<Params, PenaltyParams>) return Penalty(model, h, p);
         if constexpr (std::is_same_v<Params, ExactParams>) return ExactStepper(model, h, p);
+        if constexpr (std::is_same_v<Params, EventDrivenParams>) return EventDriven(model, h, p);
       },
       params);
 }

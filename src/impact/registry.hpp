@@ -17,6 +17,7 @@
 #include <variant>
 
 #include "impact/direct.hpp"
+#include "impact/event_driven.hpp"
 #include "impact/exact.hpp"
 #include "impact/fb_newton.hpp"
 #include "impact/model.hpp"
@@ -26,10 +27,10 @@
 namespace impact {
 
 // One method and its parameters: what a scene's [method] table says.
-using MethodParams =
-    std::variant<DirectParams, FbNewtonParams, MoreauJeanParams, PenaltyParams, ExactParams>;
+using MethodParams = std::variant<DirectParams, FbNewtonParams, MoreauJeanParams, PenaltyParams,
+                                  ExactParams, EventDrivenParams>;
 
-using AnyStepper = std::variant<Direct, FbNewton, MoreauJean, Penalty, ExactStepper>;
+using AnyStepper = std::variant<Direct, FbNewton, MoreauJean, Penalty, ExactStepper, EventDriven>;
 
 struct MethodInfo {
   std::string_view name;

@@ -32,6 +32,15 @@ void set_free_flight(Scene& s, const KeyValue& v) {
   params<Params>(s).free_flight =
       std::get<std::string>(v) == "paper" ? FreeFlightForm::paper : FreeFlightForm::closed_form;
 }
+template <class Params, double Params::*member>
+KeyValue get_number(const Scene& s) {
+  return params<Params>(s).*member;
+}
+template <class Params, double Params::*member>
+void set_number(Scene& s, const KeyValue& v) {
+  params<Params>(s).*member = std::get<double>(v);
+}
+
 constexpr std::string_view kFreeFlight =
     "free flight between contacts: in closed form from the last contact, or (5-1) term by term at "
     "every step, as printed";
@@ -142,6 +151,30 @@ const KeySpec kMethodKeys[] = {
          [](Scene& s, const KeyValue& v) {
            params<PenaltyParams>(s).max_ode_steps = std::get<std::int64_t>(v);
          }},
+    {.table = "method",
+     .key = "rtol",
+     .method = "event_driven",
+     .type = KeyType::number,
+     .range = {.lo = 0.0, .hi = 1e-3, .lo_open = true},
+     .meaning = "relative error tolerance of rk8pd between impacts",
+     .get = get_number<EventDrivenParams, &EventDrivenParams::rtol>,
+     .set = set_number<EventDrivenParams, &EventDrivenParams::rtol>},
+    {.table = "method",
+     .key = "atol",
+     .method = "event_driven",
+     .type = KeyType::number,
+     .range = {.lo = 0.0, .hi = 1e-3, .lo_open = true},
+     .meaning = "absolute error tolerance of rk8pd between impacts",
+     .get = get_number<EventDrivenParams, &EventDrivenParams::atol>,
+     .set = set_number<EventDrivenParams, &EventDrivenParams::atol>},
+    {.table = "method",
+     .key = "max_step",
+     .method = "event_driven",
+     .type = KeyType::number,
+     .range = {.lo = 0.0, .hi = 1e6, .lo_open = true},
+     .meaning = "longest ODE step; f is sampled 9 times per step to bound it for the impact search",
+     .get = get_number<EventDrivenParams, &EventDrivenParams::max_step>,
+     .set = set_number<EventDrivenParams, &EventDrivenParams::max_step>},
 };
 
 }  // namespace

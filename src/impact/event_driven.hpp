@@ -1,0 +1,44 @@
+// The method event_driven: the exact solution of (2-1)-(2-4) for any body force f(t), a muparser
+// expression above all, followed event by event (EventTrackOf, event_track.hpp) with its free
+// flights integrated by GSL odeiv2 rk8pd (OdeLaw, ode_flight.hpp: tolerances, dense output, the
+// force bound per ODE step and what it does and does not guarantee), sampled on t = l h. It is the
+// reference for an expression force, as exact is for a constant or harmonic one.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+
+#include "impact/event_track.hpp"
+#include "impact/events.hpp"
+#include "impact/model.hpp"
+#include "impact/ode_flight.hpp"
+
+namespace impact {
+
+struct EventDrivenParams {
+  double rtol = 1e-12;     // relative tolerance of rk8pd's error control, in (0, 1e-3]
+  double atol = 1e-14;     // absolute tolerance, in (0, 1e-3]
+  double max_step = 0.01;  // longest ODE step, > 0: caps the spacing of the force samples
+  bool operator==(const EventDrivenParams&) const = default;
+};
+
+class EventDriven {
+ public:
+  // Throws std::invalid_argument for parameters out of range or an expression that does not parse.
+  EventDriven(const Model& model, double h, const EventDrivenParams& params);
+
+  void initialize(const State& s, std::int64_t l);
+  // Samples the solution at t_{l+1} = (l + 1) h; N^l = impulse in (t_l, t_{l+1}] / h.
+  StepInfo do_step(State& s, std::int64_t l);
+  // Receives the impacts, sticks and lifts in increasing t as the samples pass them.
+  void set_event_sink(EventSink sink);
+
+ private:
+  Model model_;
+  double h_;
+  OdeSettings settings_;
+  std::optional<EventTrackOf<OdeLaw>> track_;
+  EventSink sink_;
+};
+
+}  // namespace impact

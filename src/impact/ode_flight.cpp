@@ -1,0 +1,217 @@
+// The ODE flights of ode_flight.hpp: GSL odeiv2 rk8pd between impacts.
+#include "impact/ode_flight.hpp"
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_odeiv2.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <exception>
+#include <utility>
+
+#include "impact/gsl_errors.hpp"
+
+namespace impact {
+
+namespace {
+
+constexpr int kSamples = 9;         // force samples per ODE step, ends included (ode_flight.hpp)
+constexpr int kLiftScan = 4096;     // samples of f per lift-off scan before the track asks again
+constexpr int kLiftSpacing = 8;     // lift-off scan spacing: max_step / kLiftSpacing
+constexpr int kChatterSamples = 5;  // samples of f over a chatter window
+
+}  // namespace
+
+// The GSL objects; on the heap, since the system's params point here.
+struct OdeLaw::Gsl {
+  Gsl(const ForceFunction* f, const OdeSettings& s) : force(f) {
+    sys = gsl_odeiv2_system{&Gsl::rhs, nullptr, 2, this};
+    step = gsl_odeiv2_step_alloc(gsl_odeiv2_step_rk8pd, 2);
+    dense = gsl_odeiv2_step_alloc(gsl_odeiv2_step_rk8pd, 2);
+    control = gsl_odeiv2_control_y_new(s.atol, s.rtol);
+    evolve = gsl_odeiv2_evolve_alloc(2);
+  }
+  Gsl(const Gsl&) = delete;
+  Gsl& operator=(const Gsl&) = delete;
+  ~Gsl() {
+    gsl_odeiv2_evolve_free(evolve);
+    gsl_odeiv2_control_free(control);
+    gsl_odeiv2_step_free(dense);
+    gsl_odeiv2_step_free(step);
+  }
+  // y = (u - phi, v): y' = (v, f(t)). A force that fails (an expression that is not finite) is kept
+  // and rethrown after GSL returns, rather than thrown through GSL's C frames.
+  static int rhs(double t, const double y[], double dydt[], void* self) {
+    auto* g = static_cast<Gsl*>(self);
+    dydt[0] = y[1];
+    try {
+      dydt[1] = g->force->at(t);
+    } catch (...) {
+      g->error = std::current_exception();
+      return GSL_EBADFUNC;
+    }
+    return GSL_SUCCESS;
+  }
+  void rethrow() {
+    if (error) std::rethrow_exception(std::exchange(error, nullptr));
+  }
+
+  const ForceFunction* force;
+  gsl_odeiv2_system sys{};
+  gsl_odeiv2_step* step;
+  gsl_odeiv2_step* dense;
+  gsl_odeiv2_control* control;
+  gsl_odeiv2_evolve* evolve;
+  std::exception_ptr error;
+  double h_next = 0;
+};
+
+OdeLaw::OdeLaw(const Model& model, const OdeSettings& settings)
+    : force_(std::make_unique<ForceFunction>(model)),
+      settings_(settings),
+      gsl_(std::make_unique<Gsl>(force_.get(), settings)) {}
+
+OdeLaw::OdeLaw(const OdeLaw& other)
+    : force_(std::make_unique<ForceFunction>(*other.force_)),
+      settings_(other.settings_),
+      gsl_(std::make_unique<Gsl>(force_.get(), settings_)),
+      t_a_(other.t_a_),
+      t_b_(other.t_b_),
+      y_a_(other.y_a_),
+      y_b_(other.y_b_),
+      bound_(other.bound_),
+      certified_(other.certified_),
+      departing_(other.departing_),
+      at_crossing_(other.at_crossing_),
+      ode_steps_(other.ode_steps_),
+      ode_ok_(other.ode_ok_) {
+  gsl_->h_next = other.gsl_->h_next;
+}
+
+OdeLaw& OdeLaw::operator=(const OdeLaw& other) {
+  if (this != &other) *this = OdeLaw(other);
+  return *this;
+}
+
+OdeLaw::OdeLaw(OdeLaw&&) noexcept = default;
+OdeLaw& OdeLaw::operator=(OdeLaw&&) noexcept = default;
+OdeLaw::~OdeLaw() = default;
+
+void OdeLaw::start(double t, double gap, double v, bool at_crossing) {
+  gsl_odeiv2_evolve_reset(gsl_->evolve);
+  gsl_->h_next = settings_.max_step / 4;
+  t_a_ = t_b_ = certified_ = t;
+  y_a_ = y_b_ = {gap, v};
+  departing_ = gap == 0.0 && v == 0.0;
+  at_crossing_ = at_crossing;
+}
+
+State OdeLaw::at(double t) const {
+  if (!(t > t_a_)) return y_a_;
+  if (t == t_b_) return y_b_;
+  GslErrorsAsStatus quiet;
+  double y[2] = {y_a_.u, y_a_.v}, error[2], rate_in[2] = {y_a_.v, force(t_a_)};
+  gsl_odeiv2_step_reset(gsl_->dense);
+  const int status =
+      gsl_odeiv2_step_apply(gsl_->dense, t_a_, t - t_a_, y, error, rate_in, nullptr, &gsl_->sys);
+  gsl_->rethrow();
+  if (status != GSL_SUCCESS) return y_b_;
+  return {y[0], y[1]};
+}
+
+void OdeLaw::take_step() {
+  GslErrorsAsStatus quiet;
+  t_a_ = t_b_;
+  y_a_ = y_b_;
+  double t = t_a_, y[2] = {y_a_.u, y_a_.v};
+  const int status = gsl_odeiv2_evolve_apply(gsl_->evolve, gsl_->control, gsl_->step, &gsl_->sys,
+                                             &t, t_a_ + settings_.max_step, &gsl_->h_next, y);
+  gsl_->rethrow();
+  if (status != GSL_SUCCESS || !(t > t_a_) || !std::isfinite(y[0]) || !std::isfinite(y[1])) {
+    ode_ok_ = false;
+    return;
+  }
+  ++ode_steps_;
+  t_b_ = t;
+  y_b_ = {y[0], y[1]};
+  // The step's force bound (ode_flight.hpp).
+  std::array<double, kSamples> f{};
+  double largest = 0, change = 0;
+  for (int i = 0; i < kSamples; ++i) {
+    f[i] = force(t_a_ + (t_b_ - t_a_) * i / (kSamples - 1));
+    largest = std::fmax(largest, std::fabs(f[i]));
+    if (i > 0) change = std::fmax(change, std::fabs(f[i] - f[i - 1]));
+  }
+  bound_ = largest + change;
+  // Leaving the floor with zero speed: g = g' = 0, and g'' = f > 0 up to the first sample where f
+  // is not positive keeps g > 0 there.
+  if (departing_) {
+    departing_ = false;
+    if (f[0] > 0.0 || at_crossing_)
+      for (int i = 1; i < kSamples && f[i] > 0.0; ++i)
+        certified_ = t_a_ + (t_b_ - t_a_) * i / (kSamples - 1);
+  }
+}
+
+std::optional<Contact> OdeLaw::search(double horizon, long& budget) {
+  while (budget > 0 && ode_ok_ && certified_ <= horizon) {
+    if (certified_ >= t_b_) {
+      --budget;
+      take_step();
+      continue;
+    }
+    if (auto contact = search_contact(*this, bound_, certified_, horizon, budget, t_b_))
+      return contact;
+  }
+  if (!ode_ok_) budget = 0;
+  return std::nullopt;
+}
+
+double OdeLaw::rate(double t) const {
+  const double d = 1e-6 * std::fmax(1.0, std::fabs(t));
+  return (force(t + d) - force(t - d)) / (2 * d);
+}
+
+Lift OdeLaw::lift_after(double t) const {
+  double a = t, fa = force(a);
+  if (fa > 0.0) return {t, true};
+  const double spacing = settings_.max_step / kLiftSpacing;
+  for (int k = 1; k <= kLiftScan; ++k) {
+    const double b = t + spacing * k, fb = force(b);
+    if (fb > 0.0) {
+      // The upward crossing in [a, b]: the root of -f, decreasing from >= 0 to < 0 there.
+      const auto minus_f = [](double x, void* self) {
+        return -static_cast<const OdeLaw*>(self)->force(x);
+      };
+      if (fa == 0.0) return {a, true};
+      return {detail::refine_root(minus_f, const_cast<OdeLaw*>(this), a, b), true};
+    }
+    a = b;
+    fa = fb;
+  }
+  return {a, false};
+}
+
+double OdeLaw::rest_impulse(double a, double b) const {
+  double value = 0;
+  // Gauss-Legendre 16 per piece of at most max_step, as accurate as the ODE steps.
+  for (double x = a; x < b; x += settings_.max_step)
+    value -= force_->integral(x, std::fmin(b, x + settings_.max_step));
+  return value;
+}
+
+std::optional<double> OdeLaw::chatter_window(double t, double V, double e) const {
+  const double g = -force(t);
+  if (!(g > 0.0)) return std::nullopt;
+  const double W0 = chatter_trial_window(e, V, g);
+  double g_min = g, g_max = g;
+  for (int i = 1; i < kChatterSamples; ++i) {
+    const double gi = -force(t + W0 * i / (kChatterSamples - 1));
+    g_min = std::fmin(g_min, gi);
+    g_max = std::fmax(g_max, gi);
+  }
+  return chatter_window_within(e, V, W0, g_min, g_max);
+}
+
+}  // namespace impact

@@ -1,0 +1,82 @@
+// The flights of any body force f(t) (an expression above all) for the event-driven method
+// event_driven: the free flight u'' = f(t), as y = (u - phi, v), y' = (v, f(t)), integrated by
+// GSL odeiv2 rk8pd with tight tolerances, the impacts found by the certified search of
+// flight_search.hpp inside each accepted ODE step, and the events of EventTrackOf.
+//
+// Dense output: the state at a time t inside an accepted step [t_a, t_b] is one rk8pd step of
+// length t - t_a from (t_a, y_a), no longer than the step the error control accepted, so it is as
+// accurate as the step's end (an interpolant of the step ends would lose orders).
+//
+// The force bound over a step. An expression has no global bound, so each accepted step gets
+//   M = max_i |f(s_i)| + max_i |f(s_(i+1)) - f(s_i)|
+// from f at 9 evenly spaced points s_i of [t_a, t_b]: the sampled maximum plus the largest change
+// between neighbours as a safety margin. For a force whose variation between neighbouring samples
+// is at most that change (true for any f with |f''| (Delta/2)^2 / 2 below it, Delta the sample
+// spacing), M bounds |f| on the step, and the search is then as certain as for a harmonic force:
+// no contact, grazing or not, is missed. Not guaranteed: a spike of f narrower than the sample
+// spacing, which rk8pd's own stages (13 per step) could miss as well; max_step caps the spacing.
+//
+// Lift-off: a resting particle lifts where f crosses 0 upward, found by sampling f every max_step/8
+// and refining the first upward sign change with GSL's Brent; a positive excursion of f shorter
+// than that spacing is not seen. The chatter window of event_track.hpp uses g_min and g_max from
+// f sampled over the window (estimated, not certified, with no bound on f').
+#pragma once
+
+#include <memory>
+#include <optional>
+
+#include "impact/flight_search.hpp"
+#include "impact/force.hpp"
+#include "impact/model.hpp"
+
+namespace impact {
+
+struct OdeSettings {
+  double rtol = 1e-12;
+  double atol = 1e-14;
+  double max_step = 0.01;
+};
+
+class OdeLaw {
+ public:
+  // Throws std::invalid_argument for an expression ForceFunction refuses.
+  OdeLaw(const Model& model, const OdeSettings& settings);
+  OdeLaw(const OdeLaw& other);
+  OdeLaw& operator=(const OdeLaw& other);
+  OdeLaw(OdeLaw&&) noexcept;
+  OdeLaw& operator=(OdeLaw&&) noexcept;
+  ~OdeLaw();
+
+  void start(double t, double gap, double v, bool at_crossing);
+  std::optional<Contact> search(double horizon, long& budget);
+  // The gap and velocity at t in the current ODE step (t >= its start).
+  State at(double t) const;
+  double certified() const { return certified_; }
+  void give_up_until(double t) { certified_ = t; }
+
+  double force(double t) const { return force_->at(t); }
+  double rate(double t) const;
+  Lift lift_after(double t) const;
+  double rest_impulse(double a, double b) const;
+  std::optional<double> chatter_window(double t, double V, double e) const;
+
+  // ODE steps taken so far, and false once an ODE step failed (GSL status).
+  long ode_steps() const { return ode_steps_; }
+  bool ode_ok() const { return ode_ok_; }
+
+ private:
+  struct Gsl;
+  void take_step();
+
+  std::unique_ptr<ForceFunction> force_;  // on the heap: the GSL system points to it
+  OdeSettings settings_;
+  std::unique_ptr<Gsl> gsl_;
+  double t_a_ = 0, t_b_ = 0;
+  State y_a_, y_b_;
+  double bound_ = 0, certified_ = 0;
+  bool departing_ = false, at_crossing_ = false;
+  long ode_steps_ = 0;
+  bool ode_ok_ = true;
+};
+
+}  // namespace impact
