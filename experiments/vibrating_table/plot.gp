@@ -148,7 +148,7 @@ do for [format in "png pdf"] {
   set xlabel "t [s] (from a state on the attractor)"
   set ylabel "u = x - y [mm]"
   set yrange [0:*]
-  set key top right box opaque noenhanced
+  unset key
   names = "period_one period_two chaos sticking"
   gammas = "1.3 1.6 1.9 1.03"
   labels = "'period 1' 'period 2' 'chaos' 'sticking and chattering'"
