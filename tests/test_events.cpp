@@ -112,7 +112,7 @@ TEST_CASE("events: --events for a bouncing ball gives the closed-form impact tim
                 "[initial]\nu0 = 1.0\nv0 = 0.0\n[floor]\ncor = 0.5\n[force]\nf = -9.80665\n"
                 "[time]\nT = 2.0\nh = 0.0001\n[method]\nname = \"direct\"\n");
   const auto exact = bouncing_ball_impacts(H, e, 6);
-  for (const std::string method : {"exact", "direct"}) {
+  for (const std::string method : {"exact", "event_driven", "direct"}) {
     INFO(method);
     const Result r =
         dir.run("run ball.toml -q -o rows.csv --events events.csv --set method.name=" + method);
@@ -122,12 +122,12 @@ TEST_CASE("events: --events for a bouncing ball gives the closed-form impact tim
     for (std::size_t k = 0; k < exact.size(); ++k) {
       INFO("impact " << k + 1);
       CHECK(events[k].kind == EventKind::impact);
-      // exact: to rounding. direct flies in closed form, so its first impact is exact too; each
-      // later one is shifted by the scheme's impacts, each of which ends its contact step on the
-      // floor at t_{l+1} (up to h late) with -e v^l (up to e h g off, so the next flight is up to
-      // 2 e h off), and later impacts, at speeds e^k V, do not amplify these shifts
-      // (measured: 0.99 h after the second impact, 3.98 h after the fifth).
-      const double tolerance = method == "exact" || k == 0 ? 1e-12 : (1 + 2 * e) * k * h;
+      // exact and event_driven: to rounding. direct flies in closed form, so its first impact is
+      // exact too; each later one is shifted by the scheme's impacts, each of which ends its
+      // contact step on the floor at t_{l+1} (up to h late) with -e v^l (up to e h g off, so the
+      // next flight is up to 2 e h off), and later impacts, at speeds e^k V, do not amplify these
+      // shifts (measured: 0.99 h after the second impact, 3.98 h after the fifth).
+      const double tolerance = method != "direct" || k == 0 ? 1e-12 : (1 + 2 * e) * k * h;
       CHECK(std::fabs(events[k].t - exact[k]) <= tolerance);
     }
     // The first impact's velocities: -V before, e V after (exact) or e |v^l| (direct).
@@ -169,8 +169,9 @@ TEST_CASE("events: --events shows a particle at rest that a harmonic force lifts
             "[initial]\nu0 = 0.0\nv0 = 0.0\n[floor]\ncor = 0.0\n"
             "[force]\nf = -9.80665\namplitude = 19.6133\nomega = 6.283185307179586\n"
             "[time]\nT = 2.0\nh = 1e-4\n[method]\nname = \"direct\"\n");
-  for (const std::string method : {"direct", "moreau_jean", "exact"}) {
+  for (const std::string method : {"direct", "moreau_jean", "exact", "event_driven"}) {
     INFO(method);
+    const bool reference = method == "exact" || method == "event_driven";
     const Result r =
         dir.run("run lift.toml -q -o /dev/null --events - --set method.name=" + method);
     REQUIRE(r.code == 0);
@@ -180,14 +181,14 @@ TEST_CASE("events: --events shows a particle at rest that a harmonic force lifts
     CHECK(events[0].t == 0.0);
     CHECK(events[1].kind == EventKind::lift);
     // A time-stepper's first free step starts within a step of t* (its mean force turns positive
-    // there); exact finds the zero of f itself, to its root solver's tolerance.
-    CHECK(std::fabs(events[1].t - 1.0 / 12) <= (method == "exact" ? 1e-12 : 1e-4));
+    // there); exact and event_driven find the zero of f itself, to their root solver's tolerance.
+    CHECK(std::fabs(events[1].t - 1.0 / 12) <= (reference ? 1e-12 : 1e-4));
     // It lands at t = 0.8248 (exact) with COR 0, and rests until f turns positive again at 13/12.
     CHECK(events[2].kind == EventKind::impact);
     CHECK(std::fabs(events[2].t - 0.8248126) <= 1e-4);
     CHECK(events[2].v_after == 0.0);
     CHECK(events[3].kind == EventKind::stick);
     CHECK(events[4].kind == EventKind::lift);
-    CHECK(std::fabs(events[4].t - 13.0 / 12) <= (method == "exact" ? 1e-12 : 1e-4));
+    CHECK(std::fabs(events[4].t - 13.0 / 12) <= (reference ? 1e-12 : 1e-4));
   }
 }
