@@ -1,8 +1,8 @@
 // The work-precision study (experiments/work_precision): its machine-independent numbers (errors
 // and observed orders; CPU times depend on the machine and are not tested) recomputed by
 // run_work_precision without timing and compared with reference.toml, the claims it supports,
-// the timing helpers, and with a time-dependent force f(t) the reference the errors are measured
-// against (work_precision_reference.hpp) and the scenes' own checks.
+// the timing helpers, and with a time-dependent force f(t) the reference
+// (work_precision_reference.hpp) and the scenes' own checks.
 #include <toml++/toml.h>
 
 #include <catch2/catch.hpp>
@@ -13,6 +13,7 @@
 
 #include "analysis/reference.hpp"
 #include "analysis/work_precision_lyapunov.hpp"
+#include "analysis/work_precision_reference.hpp"
 #include "analysis/work_precision_study.hpp"
 #include "impact/registry.hpp"
 
@@ -107,7 +108,7 @@ TEST_CASE("C36: moreau_jean is first order in the sup-norm of u on every scene",
   for (const WorkPrecisionScene& s : work_precision_scenes()) {
     INFO(s.name);
     const auto points =
-        step_curve(load_work_precision_scene(kContext, s), "moreau_jean", std::nullopt);
+        step_curve(load_work_precision_scene(kContext, s), "moreau_jean", std::nullopt, s.step_min);
     const OrderFit fit = observed_order(points, ErrorMeasure::sup_u);
     CHECK(fit.order > 0.85);
     CHECK(fit.order < 1.05);
@@ -164,33 +165,6 @@ TEST_CASE("work_precision: the reference of a force is exact, or event_driven fo
   model.harmonic.reset();
   model.expression = "-9.80665 + 4 * tanh(5 * sin(2 * t))";
   CHECK(reference_method(model) == "event_driven");
-}
-
-TEST_CASE(
-    "work_precision: against a reference trajectory, the errors are those measured against the "
-    "closed form",
-    "[work_precision][forced]") {
-  // For a constant force the reference run (`exact` sampled on the grid) is the closed form, so
-  // ReferenceErrorObserver must give ErrorObserver's numbers: the same differences of the same
-  // doubles, summed in the same order (exactly equal), and the energy E(T) = v^2/2 - f(T) u is
-  // (3-1) when f does not depend on t.
-  for (const char* name : {"figure4_cor075", "offgrid_no_cor"}) {
-    INFO(name);
-    Scene scene = scene_named(name);
-    scene.grid = Grid::covering(scene.T, 1e-3);
-    const MethodParams method = find_method("moreau_jean")->defaults;
-    AnyStepper a = make_stepper(scene.model, scene.grid.h, method);
-    const ErrorNorms closed_form = measure_errors(a, scene.model, scene.initial, scene.grid);
-    const ReferenceTrajectory reference =
-        reference_trajectory(scene.model, scene.initial, scene.grid);
-    REQUIRE(reference.states.size() == static_cast<std::size_t>(scene.grid.steps) + 1);
-    ReferenceErrorObserver errors(scene.model, reference, scene.grid);
-    AnyStepper b = make_stepper(scene.model, scene.grid.h, method);
-    const ErrorNorms against_run = errors.result(simulate(b, scene.initial, scene.grid, errors));
-    CHECK(against_run.sup_u == closed_form.sup_u);
-    CHECK(against_run.l1_v == closed_form.l1_v);
-    CHECK(against_run.energy_end == closed_form.energy_end);
-  }
 }
 
 TEST_CASE("work_precision: the period-1 scene starts on the vibrating table's period-1 orbit",

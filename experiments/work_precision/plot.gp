@@ -6,12 +6,12 @@
 #   work_precision_forced.{png,svg}   the same on the scenes with a time-dependent force f(t), and
 #                                     the chaotic scene's Lyapunov separation with its horizon
 #   work_precision_<scene>.{png,svg}  every error measure against CPU time (first row), against h
-#                                     (second row, the time-steppers) and, on the scenes penalty or
-#                                     Siconos's LSODAR run, against their tolerance (third row)
-# Penalty and LSODAR run on a fixed grid (h = 1e-3) and sweep their tolerance, over which their
-# CPU time hardly moves (it goes to the 1e4 output steps): such a sweep drawn against CPU time is a
-# vertical streak. So the CPU-time panels show the tightest tolerance only, one point per curve,
-# and the third row shows the sweep against the tolerance.
+#                                     (second row, the time-steppers) and, on the scenes penalty,
+#                                     event_driven or LSODAR run, against their tolerance (third row)
+# Penalty, event_driven and LSODAR run on a fixed grid (h = 1e-3) and sweep their tolerance,
+# over which their CPU time hardly moves (it goes to the output steps): such a sweep drawn against
+# CPU time is a vertical streak. So the CPU-time panels show the tightest tolerance only, one
+# point per curve, and the third row shows the sweep against the tolerance.
 # Each panel's y range is that of its data. Errors below 1e-16 (exact, or rounding) are drawn on
 # the bottom axis, labelled "< 10^-16", below the decade of the smallest larger error (by 7% of the
 # axis, at least half a decade; the tics then start at that decade, so no label crowds it).
@@ -24,17 +24,19 @@ set datafile separator ','
 
 file(scene, c) = results.'/curves/'.scene.'.'.c.'.csv'
 is_penalty(c) = strstrt(c, "penalty") == 1
-# A tolerance sweep on the fixed grid: penalty's and Siconos's LSODAR.
-is_tol(c) = is_penalty(c) || c eq "siconos_lsodar"
+# A tolerance sweep on the fixed grid: penalty's, event_driven's and Siconos's LSODAR.
+is_tol(c) = is_penalty(c) || c eq "siconos_lsodar" || c eq "event_driven"
 col(c) = c eq "direct" ? "#0072B2" : c eq "fb_newton" ? "#56B4E9" : c eq "moreau_jean" ? "#009E73" : \
          c eq "siconos" ? "#000000" : c eq "siconos_lsodar" ? "#7F7F7F" : \
+         c eq "event_driven" ? "#E69F00" : \
          strstrt(c, "rk8pd") ? "#CC79A7" : "#D55E00"
 dash(c) = c eq "fb_newton" ? 2 : c eq "siconos" ? 3 : is_tol(c) ? 4 : 1
 point(c) = c eq "direct" ? 7 : c eq "fb_newton" ? 6 : c eq "moreau_jean" ? 5 : c eq "siconos" ? 4 : \
-           c eq "siconos_lsodar" ? 9 : strstrt(c, "1e4") ? 8 : strstrt(c, "1e6") ? 10 : 12
+           c eq "siconos_lsodar" ? 9 : c eq "event_driven" ? 13 : strstrt(c, "1e4") ? 8 : strstrt(c, "1e6") ? 10 : 12
 tit(c) = c eq "direct" ? "direct (5-1)" : c eq "fb_newton" ? "fb\\_newton (5-3)" : \
          c eq "moreau_jean" ? "moreau\\_jean" : c eq "siconos" ? "Siconos MoreauJeanOSI + LCP" : \
          c eq "siconos_lsodar" ? "Siconos EventDriven + LsodarOSI" : \
+         c eq "event_driven" ? "event\\_driven (GSL rk8pd)" : \
          "penalty ".c[9:13]." c_N = ".c[17:]
 
 # The error measures: column in the curve files and axis label.
@@ -98,7 +100,7 @@ do for [scene in constant_scenes] {
     if (strstrt(" ".all_curves." ", " ".c." ") == 0) { all_curves = all_curves." ".c }
   }
 }
-penalty_note = "method\n(penalty, LSODAR: on the grid h = 10^{-3} s;\nagainst CPU time one point,\nat the tightest tolerance 10^{-11})\n"
+penalty_note = "method\n(penalty, event\\_driven, LSODAR: on the grid\nh = 10^{-3} s;\nagainst CPU time one point,\nat the tightest tolerance 10^{-11})\n"
 zero_note = "an error below 10^{-16} (exact, or rounding) is drawn on the bottom axis, at < 10^{-16}"
 
 set style data linespoints
@@ -213,7 +215,8 @@ do for [format in "png svg"] {
   # --- one figure per scene: every measure against CPU time, against h, against the tolerance ---
   do for [scene in scenes] {
     has_penalty = strstrt(value('curves_'.scene), "penalty") > 0 || \
-                  strstrt(value('curves_'.scene), "siconos_lsodar") > 0
+                  strstrt(value('curves_'.scene), "siconos_lsodar") > 0 || \
+                  strstrt(value('curves_'.scene), "event_driven") > 0
     nrow = has_penalty ? 3 : 2; ncol = 4
     if (format eq "png") {
       set terminal pngcairo size 2000, (has_penalty ? 1300 : 900) font ",10"
@@ -231,7 +234,7 @@ do for [format in "png svg"] {
     panel = 0
     do for [mode = 1:nrow] {
       set xlabel mode == 1 ? "CPU time of the solve [s]" : mode == 2 ? "step h [s]" : \
-          "tolerance rtol = atol (penalty, LSODAR)"
+          "tolerance rtol = atol (penalty, event\\_driven, LSODAR)"
       # The tolerances span 8 decades: a label every second one.
       if (mode == 3) { set xtics 100 } else { set xtics autofreq }
       against = mode == 1 ? "CPU time" : mode == 2 ? "the step h" : "the tolerance"

@@ -13,7 +13,6 @@
 #include <vector>
 
 #include "analysis/fit.hpp"
-#include "analysis/work_precision_reference.hpp"
 #include "impact/error_norms.hpp"
 #include "impact/model.hpp"
 #include "impact/run.hpp"
@@ -64,9 +63,9 @@ struct WorkPrecisionPoint {
   SolveCost cost;
 };
 
-// Errors from one run of a stepper built by make() against the model's reference (ExactSolution,
-// or for f(t) the event-driven run of work_precision_reference.hpp), cost from time_solve() when
-// a rule is given.
+// Errors from one run of a stepper built by make() against the model's reference (measure_errors:
+// the closed form, or for f(t) the event-driven solution), cost from time_solve() when a rule is
+// given.
 template <class Make>
 WorkPrecisionPoint measure_point(Make&& make, const Model& model, const State& initial,
                                  const Grid& grid, const std::optional<TimingRule>& rule) {
@@ -74,7 +73,7 @@ WorkPrecisionPoint measure_point(Make&& make, const Model& model, const State& i
   p.h = grid.h;
   p.steps = grid.steps;
   auto stepper = make();
-  p.errors = measure_errors_any_force(stepper, model, initial, grid);
+  p.errors = measure_errors(stepper, model, initial, grid);
   if (rule) p.cost = time_solve(make, initial, grid, *rule);
   return p;
 }

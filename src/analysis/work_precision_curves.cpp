@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "analysis/work_precision_reference.hpp"
 #include "impact/exact.hpp"
 #include "impact/registry.hpp"
 #include "scene/read_scene.hpp"
@@ -14,7 +15,8 @@ const std::vector<double> kTolerances = {1e-3, 1e-5, kPenaltyReferenceTolerance,
 const std::vector<double> kStiffnesses = {1e4, 1e6, 1e8};
 const std::vector<std::string> kOdeSteppers = {"rk8pd", "msbdf"};
 
-Curve peer_curve(Scene scene, const PeerSolver& peer, const std::optional<TimingRule>& rule) {
+Curve peer_curve(Scene scene, const PeerSolver& peer, double step_min,
+                 const std::optional<TimingRule>& rule) {
   Curve c{peer.name, peer.step_min > 0, {}};
   if (!c.step_sweep) {
     scene.grid = Grid::covering(scene.T, kPenaltyGrid);
@@ -22,7 +24,7 @@ Curve peer_curve(Scene scene, const PeerSolver& peer, const std::optional<Timing
       c.points.push_back(peer.measure(scene, tolerance, rule));
     return c;
   }
-  for (const double h : steps_125(kStepMax, peer.step_min)) {
+  for (const double h : steps_125(kStepMax, std::fmax(peer.step_min, step_min))) {
     scene.grid = Grid::covering(scene.T, h);
     c.points.push_back(peer.measure(scene, 0.0, rule));
   }
@@ -34,6 +36,27 @@ Curve penalty_curve(const Scene& scene, const std::string& stepper, double c_N,
   Curve c{"penalty_" + stepper + "_cN1e" + std::to_string(std::lround(std::log10(c_N))), false, {}};
   for (const double tolerance : kTolerances)
     c.points.push_back(measure_scene(penalty_variant(scene, stepper, c_N, tolerance), rule));
+  return c;
+}
+
+// The method event_driven (GSL rk8pd between impacts) over the tolerances, rtol = atol, on the
+// grid kPenaltyGrid: on a harmonic force, where `exact` is the reference it is measured against.
+Curve event_driven_curve(const Scene& scene, const std::optional<TimingRule>& rule) {
+  Curve c{"event_driven", false, {}};
+  for (const double tolerance : kTolerances) {
+    Scene variant = scene;
+    variant.method = find_method("event_driven")->defaults;
+    std::visit(
+        [&](auto& params) {
+          if constexpr (requires { params.rtol = params.atol = tolerance; })
+            params.rtol = params.atol = tolerance;
+        },
+        variant.method);
+    variant.grid = Grid::covering(scene.T, kPenaltyGrid);
+    WorkPrecisionPoint p = measure_scene(variant, rule);
+    p.tolerance = tolerance;
+    c.points.push_back(p);
+  }
   return c;
 }
 
@@ -51,6 +74,8 @@ const std::vector<WorkPrecisionScene>& work_precision_scenes() {
        "vibrating table, period 1: {/Symbol G} = 1.3, e = 0.5", true, true},
       {"table_chaotic", "work_precision", "table_chaotic.toml",
        "vibrating table, chaotic: {/Symbol G} = 5, e = 0.5, T = 1 s", true, true},
+      {"expression", "work_precision", "expression.toml", "f = -9.80665 + 4 tanh(5 sin 2t), no COR",
+       false, true, 1e-4},
   };
   return scenes;
 }
@@ -71,12 +96,13 @@ const std::vector<double>& swept_steps() {
 }
 
 std::vector<WorkPrecisionPoint> step_curve(const Scene& scene, std::string_view method,
-                                           const std::optional<TimingRule>& rule) {
+                                           const std::optional<TimingRule>& rule, double step_min) {
   const MethodInfo* info = find_method(method);
   if (!info) throw std::out_of_range("no method " + std::string(method));
   Scene variant = scene;
   variant.method = info->defaults;
-  return sweep_steps(variant, swept_steps(), rule);
+  return sweep_steps(variant, step_min == kStepMin ? swept_steps() : steps_125(kStepMax, step_min),
+                     rule);
 }
 
 Scene penalty_variant(Scene scene, const std::string& stepper, double c_N, double tolerance) {
@@ -89,15 +115,17 @@ Scene penalty_variant(Scene scene, const std::string& stepper, double c_N, doubl
   return scene;
 }
 
-std::vector<Curve> measure_curves(const Scene& scene, bool has_cor,
+std::vector<Curve> measure_curves(const Scene& scene, const WorkPrecisionScene& spec,
                                   const WorkPrecisionOptions& options) {
   std::vector<Curve> curves;
   for (const char* method : {"moreau_jean", "fb_newton", "direct"})
-    curves.push_back({method, true, step_curve(scene, method, options.timing)});
+    curves.push_back({method, true, step_curve(scene, method, options.timing, spec.step_min)});
   for (const PeerSolver& peer : options.peers)
     if (!peer.time_dependent_force_only || !constant_force(scene.model))
-      curves.push_back(peer_curve(scene, peer, options.timing));
-  if (!has_cor)
+      curves.push_back(peer_curve(scene, peer, spec.step_min, options.timing));
+  if (!constant_force(scene.model) && scene.model.expression.empty() && find_method("event_driven"))
+    curves.push_back(event_driven_curve(scene, options.timing));
+  if (!spec.has_cor)
     for (const std::string& stepper : kOdeSteppers)
       for (const double c_N : kStiffnesses)
         curves.push_back(penalty_curve(scene, stepper, c_N, options.timing));

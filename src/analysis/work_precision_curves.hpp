@@ -19,19 +19,23 @@
 
 namespace impact {
 
+// The step sweep: h = 0.1, 0.05, 0.02, ..., 1e-5 (4 decades, 13 steps; steps_125).
+constexpr double kStepMax = 0.1, kStepMin = 1e-5;
+
 struct WorkPrecisionScene {
   std::string name;
   std::string experiment, file;  // experiments/<experiment>/<file>
   std::string title;
   bool has_cor;
   bool forced = false;  // f depends on t: its reference is reference_method(), not ExactSolution
+  // The step sweep's smallest h: larger where a step costs much more (an expression force, whose
+  // step mean takes 16 muparser evaluations), to keep the study's run time.
+  double step_min = kStepMin;
 };
 const std::vector<WorkPrecisionScene>& work_precision_scenes();
 const WorkPrecisionScene& work_precision_scene(std::string_view name);
 Scene load_work_precision_scene(const ExperimentContext& context, const WorkPrecisionScene& s);
 
-// The step sweep: h = 0.1, 0.05, 0.02, ..., 1e-5 (4 decades, 13 steps; steps_125).
-constexpr double kStepMax = 0.1, kStepMin = 1e-5;
 const std::vector<double>& swept_steps();
 // Penalty's output grid, and the middle of its tolerance sweep (the reference point).
 constexpr double kPenaltyGrid = 1e-3, kPenaltyReferenceTolerance = 1e-7;
@@ -62,15 +66,18 @@ struct WorkPrecisionOptions {
   std::vector<PeerSolver> peers;
 };
 
-// The time-stepper's curve: the scene with the method's default parameters over swept_steps().
+// The time-stepper's curve: the scene with the method's default parameters over swept_steps(),
+// down to step_min.
 std::vector<WorkPrecisionPoint> step_curve(const Scene& scene, std::string_view method,
-                                           const std::optional<TimingRule>& rule);
+                                           const std::optional<TimingRule>& rule,
+                                           double step_min = kStepMin);
 // The scene as penalty with this GSL stepper, c_N and rtol = atol = tolerance, on kPenaltyGrid.
 Scene penalty_variant(Scene scene, const std::string& stepper, double c_N, double tolerance);
 
 // Every curve of a scene, in drawing order: moreau_jean, fb_newton, direct (on top where their
-// errors coincide), the peers, then penalty's (on a scene without COR: penalty has no COR law).
-std::vector<Curve> measure_curves(const Scene& scene, bool has_cor,
+// errors coincide), the peers, event_driven over its tolerance (on a harmonic force, where it is
+// not the reference), then penalty's (on a scene without COR: penalty has no COR law).
+std::vector<Curve> measure_curves(const Scene& scene, const WorkPrecisionScene& spec,
                                   const WorkPrecisionOptions& options);
 
 // `direct` without COR, f = 0, one impact at t* off the grid: with theta the fraction of the step

@@ -3,7 +3,10 @@
 #include <stdexcept>
 #include <string>
 
-#include "impact/force.hpp"
+#include "impact/event_log.hpp"
+#include "impact/events.hpp"
+#include "impact/registry.hpp"
+#include "impact/run.hpp"
 
 namespace impact {
 
@@ -37,23 +40,6 @@ ReferenceTrajectory reference_trajectory(const Model& model, const State& initia
     reference.states.push_back(s);
   });
   return reference;
-}
-
-ReferenceErrorObserver::ReferenceErrorObserver(const Model& model,
-                                               const ReferenceTrajectory& reference,
-                                               const Grid& grid)
-    : model_(model),
-      reference_(&reference),
-      grid_(grid),
-      f_end_(ForceFunction(model).at(grid.end())) {}
-
-ErrorNorms ReferenceErrorObserver::result(const RunSummary& run) const {
-  // E(T) = v^2/2 - f(T) u of the method and of the reference, both at the last grid time.
-  const auto energy_at_end = [&](const State& s) { return 0.5 * s.v * s.v - f_end_ * s.u; };
-  ErrorNorms e = e_;
-  e.energy_end = std::fabs(energy_at_end(previous_) - energy_at_end(reference_->states.back()));
-  e.run = run;
-  return e;
 }
 
 }  // namespace impact

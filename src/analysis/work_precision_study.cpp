@@ -137,7 +137,7 @@ struct Outputs {
 toml::table run_scene(const ExperimentContext& context, const WorkPrecisionScene& spec,
                       const WorkPrecisionOptions& options, Outputs& out, toml::table& summary) {
   const Scene scene = load_work_precision_scene(context, spec);
-  const std::vector<Curve> curves = measure_curves(scene, spec.has_cor, options);
+  const std::vector<Curve> curves = measure_curves(scene, spec, options);
   toml::table scene_summary;
   std::string names;
   for (const Curve& c : curves) {
