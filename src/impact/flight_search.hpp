@@ -43,6 +43,12 @@ class HarmonicFlight {
     return {gap_a_ + dt * (v_a_ + f_ * dt / 2 + k_ * cos_a_) - k_w_ * (sin_theta - sin_a_),
             v_a_ + f_ * dt + k_ * (cos_a_ - cos_theta)};
   }
+  // The same, written in x = omega (t - t_a) so that each term is accurate relative to its own
+  // size: g = g_a + dt (v_a + f dt/2) + (A/omega^2)(cos a0 (x - sin x) + sin a0 (1 - cos x)),
+  // v = v_a + f dt + (A/omega)(cos a0 (1 - cos x) + sin a0 sin x). The form above carries the
+  // rounding of theta(t) ~ 1e-16 omega t, i.e. ~1e-17 m in g on a table at 10 Hz, a floor under
+  // which a chatter's impact speeds (sqrt(2 |f| g)) could not decay; this one is exact to rounding
+  // in g itself, so the search and the impacts use it.
   State at(double t) const;
   double start() const { return t_a_; }
 
