@@ -44,7 +44,7 @@ ForcedEnergyCounts ForcedEnergyMonitor::finish(double sup_force, double T, doubl
 double phasor_energy_roundoff(const Model& model, double sup_force, double T, double max_v) {
   if (!model.harmonic) return 0.0;
   const Harmonic& w = *model.harmonic;
-  const double drift = 5 * GridPhasor::kReanchorSteps * std::numeric_limits<double>::epsilon();
+  const double drift = SchemeFlight::kHarmonicTermError;
   const double scale = std::fabs(w.amplitude) / w.omega * drift;
   return 2 * scale * (max_v + sup_force * (T + 2 / w.omega));
 }

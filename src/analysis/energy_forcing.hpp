@@ -51,12 +51,10 @@ class ForcedEnergyMonitor {
   std::vector<Increment> increments_;
 };
 
-// The schemes evaluate sin and cos of omega t_l + phase by a rotation re-anchored every
-// GridPhasor::kReanchorSteps steps (scheme_flight.hpp), off by at most d = 5 kReanchorSteps eps
-// relative. Their free flight carries it as (a/omega) d in v and (a/omega)(T + 2/omega) d in u
-// (the terms (a/omega) cos theta and (a/omega) c sin theta, c <= 1/omega), and a re-anchoring step
-// passes it to one increment: (v^2/2) changes by up to 2 max|v| (a/omega) d, f^l (u^{l+1} - u^l) by
-// up to 2 sup|f| (a/omega)(T + 2/omega) d. 0 without a harmonic part.
+// The schemes' free flight evaluates its harmonic terms (scheme_flight.hpp) to within (a/omega) d
+// in v and (a/omega)(T + 2/omega) d in u, d = SchemeFlight::kHarmonicTermError, and a step passes
+// that to one increment: (v^2/2) changes by up to 2 max|v| (a/omega) d, f^l (u^{l+1} - u^l) by up
+// to 2 sup|f| (a/omega)(T + 2/omega) d. 0 without a harmonic part.
 double phasor_energy_roundoff(const Model& model, double sup_force, double T, double max_v);
 
 struct ForcedEnergySummary {

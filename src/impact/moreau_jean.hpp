@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <type_traits>
 
 #include "impact/model.hpp"
 #include "impact/scheme_flight.hpp"
@@ -55,44 +56,52 @@ struct MoreauJeanParams {
 // identity h sum N^l = v^n - v^0 - int_0^T f then holds to rounding as for a constant force, the
 // free-flight velocity is exact at the grid times, and with theta = 1/2 the position is its
 // trapezoidal rule, second order (Siconos's MoreauJeanOSI weights f(t_l), f(t_{l+1}) by theta
-// instead, which is second order too but keeps neither).
-class MoreauJean {
+// instead, which is second order too but keeps neither). `MoreauJean` is the constant force,
+// `MoreauJeanTimeDependent` f(t): two types, as for direct (direct.hpp says why).
+template <bool TimeDependent>
+class BasicMoreauJean {
  public:
-  MoreauJean(const Model& model, double h, const MoreauJeanParams& params)
+  BasicMoreauJean(const Model& model, double h, const MoreauJeanParams& params)
       : phi_(model.phi),
         f_(model.f),
         h_(h),
         theta_(params.theta),
         e_(model.cor.value_or(1.0)),
-        force_(model, h),
-        constant_(force_.constant()) {}
+        force_(model, h) {}
 
   void initialize(const State& s, std::int64_t l) {
     state_ = {s.u - phi_, s.v};
-    force_.seek(l);
+    if constexpr (TimeDependent) force_.seek(l);
   }
 
   StepInfo do_step(State& s, std::int64_t l) {
     StepInfo info;
-    if (constant_) {
-      moreau_jean_step(state_.u, state_.v, info.contact_force, f_, e_, theta_, h_);
-    } else {
+    if constexpr (TimeDependent) {
       const SchemeForce::Impulse impulse = force_.advance(l);
       const double v_free = state_.v + h_ * f_ + (impulse.harmonic + impulse.expression);
       moreau_jean_update(state_.u, state_.v, info.contact_force, v_free, e_, theta_, h_);
+    } else {
+      moreau_jean_step(state_.u, state_.v, info.contact_force, f_, e_, theta_, h_);
     }
     s = {phi_ + state_.u, state_.v};
     return info;
   }
 
  private:
+  // The constant force needs no state.
+  struct NoForce {
+    NoForce(const Model&, double) {}
+  };
+
   double phi_, f_;
   double h_;
   double theta_;
   double e_;
   State state_;  // (u - phi, v) at t_l
-  SchemeForce force_;
-  bool constant_;
+  [[no_unique_address]] std::conditional_t<TimeDependent, SchemeForce, NoForce> force_;
 };
+
+using MoreauJean = BasicMoreauJean<false>;
+using MoreauJeanTimeDependent = BasicMoreauJean<true>;
 
 }  // namespace impact

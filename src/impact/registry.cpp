@@ -60,9 +60,22 @@ AnyStepper make_stepper(const Model& model, double h, const MethodParams& params
   return std::visit(
       [&](const auto& p) -> AnyStepper {
         using Params = std::decay_t<decltype(p)>;
-        if constexpr (std::is_same_v<Params, DirectParams>) return Direct(model, h, p);
+        if constexpr (std::is_same_v<Params, DirectParams>) {
+          switch (force_kind(model)) {
+            case ForceKind::constant:
+              return Direct(model, h, p);
+            case ForceKind::harmonic:
+              return DirectHarmonic(model, h, p);
+            case ForceKind::time_dependent:
+              break;
+          }
+          return DirectTimeDependent(model, h, p);
+        }
         if constexpr (std::is_same_v<Params, FbNewtonParams>) return FbNewton(model, h, p);
-        if constexpr (std::is_same_v<Params, MoreauJeanParams>) return MoreauJean(model, h, p);
+        if constexpr (std::is_same_v<Params, MoreauJeanParams>) {
+          if (constant_force(model)) return MoreauJean(model, h, p);
+          return MoreauJeanTimeDependent(model, h, p);
+        }
         if constexpr (std::is_same_v<Params, PenaltyParams>) return Penalty(model, h, p);
         if constexpr (std::is_same_v<Params, ExactParams>) return ExactStepper(model, h, p);
         if constexpr (std::is_same_v<Params, EventDrivenParams>) return EventDriven(model, h, p);

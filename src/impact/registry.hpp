@@ -30,7 +30,10 @@ namespace impact {
 using MethodParams = std::variant<DirectParams, FbNewtonParams, MoreauJeanParams, PenaltyParams,
                                   ExactParams, EventDrivenParams>;
 
-using AnyStepper = std::variant<Direct, FbNewton, MoreauJean, Penalty, ExactStepper, EventDriven>;
+// DirectHarmonic, DirectTimeDependent and MoreauJeanTimeDependent are `direct` and `moreau_jean`
+// with a time-dependent force (direct.hpp says why more than one type).
+using AnyStepper = std::variant<Direct, FbNewton, MoreauJean, Penalty, ExactStepper, EventDriven,
+                                DirectHarmonic, DirectTimeDependent, MoreauJeanTimeDependent>;
 
 struct MethodInfo {
   std::string_view name;

@@ -21,74 +21,135 @@
 #pragma once
 
 #include <cstdint>
-#include <optional>
+#include <memory>
+#include <vector>
 
 #include "impact/force.hpp"
+#include "impact/free_flight.hpp"
 #include "impact/model.hpp"
 
 namespace impact {
 
-// (cos theta_l, sin theta_l), theta_l = omega l h + phase, at consecutive grid times, by rotating
-// with (cos omega h, sin omega h): one sin/cos per step cost 5 times a constant-force direct step.
-// Every kReanchorSteps steps (at the multiples of kReanchorSteps, whatever the start) the pair is
-// computed afresh from theta_l, so that it is a function of l alone. Drift bound: the rounded
-// rotation is a rotation by omega h + O(u) scaled by 1 + O(u) (u = 2^-53), and each rotation rounds
-// 4 products and 2 sums, so j steps after an anchor the pair is off by at most (1 + 5 j) u, below
-// 5 kReanchorSteps u = 3.6e-14 (tests/test_forcing_steppers.cpp measures it).
+// (cos theta_l, sin theta_l), theta_l = omega l h + phase, at consecutive grid times (l < 2^54),
+// without a sin or cos per step and without any call in the step: a call in the step loop, even
+// one every 64 steps (a rotation by omega h re-anchored with sin and cos), made GCC keep the whole
+// stepper in memory (a harmonic direct step took 8.4-13 instead of 5.2-7.1 ns). With l in base 64,
+// l = sum_k d_k 64^k, theta_l = phase + sum_k d_k 64^k omega h, so the pair is the complex product
+// of phase's and of one table entry per digit, table[k][d] = (cos, sin)(omega (d 64^k h)), all
+// computed with std::cos/std::sin when the phasor is made (kLevels 64 entries). Each step
+// multiplies the product of the upper digits (recomputed when d_0 wraps) by table[0][d_0]: no
+// error accumulates from step to step, and the pair is a function of l alone. Error bound: with n
+// factors other than (1, 0) (phase and the non-zero digits, n <= kLevels + 1), each rounded to u
+// (u = 2^-53) and n - 1 products each rounding 2 products and a sum, every component is within
+// (4 n - 3) u of (cos, sin) of the sum of the factors' angles (tests/test_forcing_steppers.cpp
+// measures it): 1.9e-15 for 1e7 steps (n <= 5). The angles themselves are rounded as
+// ForceFunction::at rounds omega t + phase, a few ulp of theta.
 class GridPhasor {
  public:
-  static constexpr int kReanchorSteps = 64;
+  static constexpr int kDigitBits = 6;
+  static constexpr int kBase = 1 << kDigitBits;
+  static constexpr int kLevels = 9;  // 64^9 = 2^54 grid points, more than a grid has (2^53)
+  // The error bound above for any l: (4 (kLevels + 1) - 3) u = 4.1e-15.
+  static constexpr double kError = (4 * (kLevels + 1) - 3) * 0x1p-53;
 
+  GridPhasor() = default;
   GridPhasor(const Harmonic& w, double h);
   // To theta_l.
-  void seek(std::int64_t l);
+  void seek(std::int64_t l) {
+    l_ = l;
+    Pair upper = phase_;
+    for (int k = kLevels - 1; k >= 1; --k)
+      upper = times(upper, table_[k * kBase + ((l >> (kDigitBits * k)) & (kBase - 1))]);
+    upper_ = upper;
+    digit_ = static_cast<int>(l & (kBase - 1));
+    now_ = times(upper_, table_[digit_]);
+  }
   // From theta_l to theta_{l+1}.
   void advance() {
+    if (++digit_ == kBase) [[unlikely]] {
+      seek(l_ + 1);
+      return;
+    }
     ++l_;
-    if (--countdown_ == 0) return anchor();
-    const double c = c_ * rot_c_ - s_ * rot_s_;
-    s_ = s_ * rot_c_ + c_ * rot_s_;
-    c_ = c;
+    now_ = times(upper_, table_[digit_]);
   }
-  double cos() const { return c_; }
-  double sin() const { return s_; }
+  double cos() const { return now_.c; }
+  double sin() const { return now_.s; }
   std::int64_t l() const { return l_; }
 
- private:
-  void anchor();
+  // The angle table[k][d] stands for, as the table computed it (for tests).
+  double angle(int k, int d) const;
 
-  double omega_, phase_, h_, rot_c_, rot_s_;
+ private:
+  struct Pair {
+    double c = 1, s = 0;
+  };
+  static Pair times(const Pair& a, const Pair& b) {
+    return {a.c * b.c - a.s * b.s, a.s * b.c + a.c * b.s};
+  }
+
+  double omega_ = 0, h_ = 0;
+  std::vector<Pair> table_;  // table[k][d] at k * kBase + d
+  Pair phase_;
   std::int64_t l_ = 0;
-  int countdown_ = kReanchorSteps;
-  double c_ = 1, s_ = 0;
+  int digit_ = 0;  // d_0 of l
+  Pair upper_;     // phase times the entries of d_1 .. d_{kLevels - 1}
+  Pair now_;       // (cos, sin) theta_l
 };
 
 // The varying part f(t) - f of the body force on the grid: its impulse I^l over each step.
 class SchemeForce {
  public:
   SchemeForce(const Model& model, double h);
+  SchemeForce(const SchemeForce& other);
+  SchemeForce& operator=(const SchemeForce& other);
+  SchemeForce(SchemeForce&&) noexcept = default;
+  SchemeForce& operator=(SchemeForce&&) noexcept = default;
+  ~SchemeForce() = default;
 
-  bool constant() const { return !phasor_ && !expression_; }
+  bool constant() const { return !has_phasor_ && !expression_; }
   // I^l, the integral of f(t) - f over [t_l, t_{l+1}], as its harmonic and expression parts; the
   // phasor is moved to t_{l+1} (from wherever it was: a call for another l than the last + 1
   // seeks first).
   struct Impulse {
     double harmonic = 0, expression = 0;
   };
-  Impulse advance(std::int64_t l);
-  // The phasor at t_l.
-  void seek(std::int64_t l) {
-    if (phasor_ && phasor_->l() != l) phasor_->seek(l);
+  // Expression = false leaves the expression part out (for a model without one): its evaluation
+  // is a call, and a call in the step loop keeps a stepper in memory (see GridPhasor).
+  template <bool Expression = true>
+  Impulse advance(std::int64_t l) {
+    Impulse impulse;
+    if (has_phasor_) {
+      seek(l);
+      const double c0 = phasor_.cos();
+      phasor_.advance();
+      // (a/w)(cos theta_l - cos theta_{l+1}); the difference cancels for short steps, to an
+      // absolute error of a few ulp of a/w, the scale of the harmonic part of the velocity.
+      impulse.harmonic = amplitude_over_omega_ * (c0 - phasor_.cos());
+    }
+    if constexpr (Expression)
+      if (expression_) impulse.expression = expression_integral(*expression_, l, h_);
+    return impulse;
   }
-  // The harmonic part: a / w and the phasor at the current time (closed-form flights).
-  const std::optional<GridPhasor>& phasor() const { return phasor_; }
+  // The phasor at t_l.
+  [[gnu::always_inline]] void seek(std::int64_t l) {
+    if (has_phasor_ && phasor_.l() != l) [[unlikely]]
+      phasor_.seek(l);
+  }
+  // The harmonic part: whether there is one, a / w and the phasor at the current time.
+  bool harmonic() const { return has_phasor_; }
+  const GridPhasor& phasor() const { return phasor_; }
   double amplitude_over_omega() const { return amplitude_over_omega_; }
 
  private:
+  static double expression_integral(const ForceFunction& expression, std::int64_t l, double h);
+
   double h_;
-  std::optional<GridPhasor> phasor_;
+  bool has_phasor_ = false;
+  GridPhasor phasor_;
   double amplitude_over_omega_ = 0;
-  std::optional<ForceFunction> expression_;  // the expression part alone (f = 0, no harmonic)
+  // The expression part alone (f = 0, no harmonic), on the heap: its parser binds t by address.
+  std::unique_ptr<ForceFunction> expression_;
 };
 
 // The largest w h for which the harmonic flight is summed in closed form (c above keeps all but a
@@ -100,26 +161,68 @@ inline constexpr double kMaxClosedFormPhase = 1.0;
 // closed form of free_flight.hpp, bit for bit.
 class SchemeFlight {
  public:
+  // The harmonic terms (a/w)(cos theta_a - cos theta_m) of v and (a/w)(s cos theta_a -
+  // c (sin theta_m - sin theta_a)) of u are within (a/w) d and (a/w)(s + 2/w) d of their values for
+  // the exact cos and sin, d = 2 GridPhasor::kError + 4 u: each phasor value is off by kError, the
+  // difference of two and the products round by at most 4 u of those scales (c <= 1/w).
+  static constexpr double kHarmonicTermError = 2 * GridPhasor::kError + 4 * 0x1p-53;
+
   SchemeFlight(const Model& model, double h);
 
   bool constant_force() const { return force_.constant(); }
   // A free flight starts at (t_l, s).
-  void start(std::int64_t l, const State& s);
-  // The state at t_{l+1} if no contact force acts in step l (l: consecutive after start), and
-  // f^l, the step's discrete force, in step_force().
-  State step(std::int64_t l);
-  double step_force() const { return step_force_; }
+  void start(std::int64_t l, const State& s) {
+    anchor_l_ = l;
+    anchor_ = s;
+    stepped_ = {};
+    force_.seek(l);
+    if (closed_form_) {
+      anchor_cos_ = force_.phasor().cos();
+      anchor_sin_ = force_.phasor().sin();
+    }
+  }
+  // The state at t_{l+1} if no contact force acts in step l (l: consecutive after start);
+  // Expression as for SchemeForce::advance.
+  template <bool Expression = true>
+  State step(std::int64_t l) {
+    State next;
+    const double s = static_cast<double>(l + 1 - anchor_l_) * h_;
+    free_flight(anchor_.u, anchor_.v, s, f_, next.u, next.v);
+    if (force_.constant()) return next;
+    const SchemeForce::Impulse impulse = force_.template advance<Expression>(l);
+    impulse_ = impulse.harmonic + impulse.expression;
+    if (stepped_part_) {
+      const double stepped = closed_form_ ? impulse.expression : impulse_;
+      // (4-1)-(4-2) with N^l = 0 for the stepped part: u += h (V + I/2), V += I.
+      stepped_.u += h_ * (stepped_.v + stepped / 2);
+      stepped_.v += stepped;
+      next.u += stepped_.u;
+      next.v += stepped_.v;
+    }
+    if (closed_form_) {
+      // The harmonic terms of the file's comment: differences of the phasor's values (exact when
+      // they are close) times a/w and (a/w) c, rather than folded into the anchor, whose rounding
+      // (of the anchor's size) would then enter every step (kHarmonicTermError).
+      const double k = force_.amplitude_over_omega();
+      next.v += k * (anchor_cos_ - force_.phasor().cos());
+      next.u += k * (s * anchor_cos_) - k_trapezoid_ * (force_.phasor().sin() - anchor_sin_);
+    }
+    return next;
+  }
+  // f^l of the last step(l), the step's discrete force: f + I^l / h.
+  double step_force() const { return force_.constant() ? f_ : f_ + impulse_ / h_; }
 
  private:
   double f_, h_;
   SchemeForce force_;
-  bool closed_form_ = false;  // the harmonic part in closed form (else stepped with the rest)
-  double trapezoid_ = 0;      // c = (h/2) cot(w h/2)
+  bool closed_form_ = false;   // the harmonic part in closed form
+  bool stepped_part_ = false;  // an expression, or a harmonic part not in closed form
+  double k_trapezoid_ = 0;     // (a/w) c, c = (h/2) cot(w h/2)
   std::int64_t anchor_l_ = 0;
   State anchor_;
-  double anchor_cos_ = 0, anchor_sin_ = 0;
-  State stepped_;  // the stepped varying part since the anchor (U, V)
-  double step_force_ = 0;
+  double anchor_cos_ = 0, anchor_sin_ = 0;  // the phasor at the anchor
+  State stepped_;                           // the stepped varying part since the anchor (U, V)
+  double impulse_ = 0;
 };
 
 }  // namespace impact
