@@ -267,3 +267,31 @@ TEST_CASE("exact forcing: a table's chatters decay to the cut-off, not to a roun
   CHECK(sticks >= 19);
   CHECK(impacts < 10000);
 }
+
+TEST_CASE("exact forcing: a constant force's events come from the closed form",
+          "[exact][forcing]") {
+  // Figure 4 with COR 0.75: the impacts are ExactSolution's impact_time(k) and impact_speed(k) as
+  // they are, down to the cut-off 1e-8 of the first speed (k - 1 <= log(1e-8) / log(0.75), i.e.
+  // 65 impacts), then the stick at the Zeno time.
+  Model model;
+  model.f = -kG;
+  model.cor = 0.75;
+  const State initial{5.0, -1.0};
+  const ExactSolution closed(model, initial);
+  impact::AnyStepper stepper = impact::make_stepper(model, 1e-3, impact::ExactParams{});
+  std::vector<Event> events;
+  std::get<impact::ExactStepper>(stepper).set_event_sink(
+      [&](const Event& e) { events.push_back(e); });
+  impact::simulate(stepper, initial, impact::Grid{1e-3, 10000},
+                   [](std::int64_t, const State&, const impact::StepInfo&) {});
+  REQUIRE(events.size() == 66);
+  for (std::int64_t k = 1; k <= 65; ++k) {
+    const Event& e = events[static_cast<std::size_t>(k - 1)];
+    CHECK(e.kind == EventKind::impact);
+    CHECK(e.t == *closed.impact_time(k));
+    CHECK(-e.v_before == *closed.impact_speed(k));
+    CHECK(e.v_after == 0.75 * *closed.impact_speed(k));
+  }
+  CHECK(events.back().kind == EventKind::stick);
+  CHECK(events.back().t == *closed.rest_time());
+}
