@@ -100,7 +100,9 @@ do for [scene in constant_scenes] {
     if (strstrt(" ".all_curves." ", " ".c." ") == 0) { all_curves = all_curves." ".c }
   }
 }
-penalty_note = "method\n(penalty, event\\_driven, LSODAR: on the grid\nh = 10^{-3} s;\nagainst CPU time one point,\nat the tightest tolerance 10^{-11})\n"
+penalty_note = "method\n(penalty: on the grid h = 10^{-3} s;\nagainst CPU time one point,\nat its tightest tolerance 10^{-11})\n"
+# The same for the figures whose tolerance sweeps include event_driven's and LSODAR's.
+tolerance_note = "method\n(penalty, event\\_driven, LSODAR:\non the grid h = 10^{-3} s;\nagainst CPU time one point,\nat the tightest tolerance 10^{-11})\n"
 zero_note = "an error below 10^{-16} (exact, or rounding) is drawn on the bottom axis, at < 10^{-16}"
 
 set style data linespoints
@@ -207,7 +209,7 @@ do for [format in "png svg"] {
       if (strstrt(" ".key_curves." ", " ".c." ") == 0) { key_curves = key_curves." ".c }
     }
   }
-  key_title = penalty_note
+  key_title = tolerance_note
   @key_strip
   unset multiplot
   }
@@ -250,7 +252,10 @@ do for [format in "png svg"] {
         @plot_curves
       }
     }
-    key_curves = value('curves_'.scene); key_title = has_penalty ? penalty_note : "method"
+    key_curves = value('curves_'.scene)
+    key_title = !has_penalty ? "method" : strstrt(key_curves, "penalty") && \
+                strstrt(key_curves, "_driven") + strstrt(key_curves, "lsodar") == 0 ? penalty_note : \
+                tolerance_note
     @key_strip
     unset multiplot
   }
