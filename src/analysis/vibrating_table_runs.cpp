@@ -2,11 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
-#include <variant>
 
 #include "analysis/vibrating_table_theory.hpp"
+#include "impact/event_log.hpp"
 #include "impact/output.hpp"
 #include "impact/run.hpp"
 
@@ -31,39 +32,6 @@ struct EventCollector {
     if (t < transient_end || run->events.size() >= max_events) return;
     run->events.push_back(
         {t, kind, wrapped_phase(scene->omega * t + scene->phase), v_after / scene->speed_unit()});
-  }
-};
-
-// The events of a time-stepper from its N^l (see the header): contact steps in a row form one
-// episode; one step is an impact, more are an impact followed by a rest.
-struct ContactEpisodes {
-  double h;
-  const EventCollector* collect;
-  bool in_contact = false;
-  std::int64_t start = 0, length = 0;  // the episode's first contact step ends at t_start
-  State first_end{}, last{};
-
-  void operator()(std::int64_t l, const State& s, const StepInfo& info) {
-    if (info.contact_force > 0) {
-      if (!in_contact) {
-        in_contact = true;
-        start = l;
-        length = 0;
-        first_end = s;
-      }
-      ++length;
-    } else if (in_contact) {
-      finish(l - 1);
-    }
-    last = s;
-  }
-  // The episode ended with the step that ended at t_end.
-  void finish(std::int64_t end) {
-    in_contact = false;
-    (*collect)(static_cast<double>(start) * h, EventKind::impact, first_end.v);
-    if (length < 2) return;
-    (*collect)(static_cast<double>(start) * h, EventKind::stick, 0.0);
-    (*collect)(static_cast<double>(end) * h, EventKind::lift, 0.0);
   }
 };
 
@@ -97,22 +65,17 @@ TableRun run_table(const TableScene& scene, const MethodParams& method, double h
   TableRun run;
   const EventCollector collect{&scene, transient * scene.period(), max_events, &run};
   const Grid grid = Grid::covering(periods * scene.period(), h);
-  AnyStepper any = make_stepper(table_model(scene), h, method);
+  const Model model = table_model(scene);
+  AnyStepper any = make_stepper(model, h, method);
+  const EventSink sink = [&](const Event& event) { collect(event.t, event.kind, event.v_after); };
   try {
-    std::visit(
-        [&](auto& stepper) {
-          if constexpr (requires { stepper.set_event_sink(EventSink{}); }) {
-            stepper.set_event_sink(
-                [&](const Event& event) { collect(event.t, event.kind, event.v_after); });
-            simulate(stepper, scene.initial, grid,
-                     [&](std::int64_t, const State& s, const StepInfo&) { run.final_state = s; });
-          } else {
-            ContactEpisodes episodes{h, &collect};
-            simulate(stepper, scene.initial, grid, episodes);
-            run.final_state = episodes.last;
-          }
-        },
-        any);
+    // A time-stepper's events are read off its steps by the rules of `impact run --events`.
+    std::optional<EventLog> log;
+    if (!attach_event_sink(any, sink)) log.emplace(model, h, sink);
+    simulate(any, scene.initial, grid, [&](std::int64_t l, const State& s, const StepInfo& info) {
+      if (log) (*log)(l, s, info);
+      run.final_state = s;
+    });
   } catch (const std::exception& e) {
     throw std::runtime_error(
         std::string(method_name(method)) + " at h = " + round_trip(h) +

@@ -1,10 +1,10 @@
 // The ball on a vibrating table y = a sin(omega t + phase) as a scene of the package (the model of
 // vibrating_table_theory.hpp in SI units: f(t) = -g + Gamma g sin(omega t + phase), phi = 0,
 // COR = e) and what one run of any method says about it: its impacts and its rests on the table.
-// The methods that know their events exactly (exact) report them through set_event_sink; for a
-// time-stepper they are derived from N^l: an impact is a contact step after a free step, dated at
-// the end of that step, t_{l+1}, where (4-4) applies its impulse; two or more contact steps in a
-// row are a rest (stick at the first, lift at the end of the last).
+// The events are those `impact run --events` reports (event_log.hpp): the methods that know them
+// exactly (exact) report them through set_event_sink; a time-stepper's are read off its steps by
+// EventLog (an impact dated where the step's flight under its mean force crosses the floor, a
+// rest from two contact steps in a row ending at rest).
 #pragma once
 
 #include <cstdint>
