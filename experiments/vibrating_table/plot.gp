@@ -77,7 +77,7 @@ do for [format in "png pdf"] {
     set terminal pdfcairo size 8.7in,6.7in font ",7"
     set output 'figures/vibrating_table_steppers.pdf'
   }
-  set multiplot layout 2,2 title "Time-steppers on the vibrating table: impact phases of both sweeps (impact = a contact step after a free step, dated at its end) over the exact ones"
+  set multiplot layout 2,2 title "Time-steppers on the vibrating table: impact phases of both sweeps (impacts as impact run --events dates them: where the step's flight crosses the table) over the exact ones"
   set key inside left top box opaque font ",8"
   do for [e in "0.5 0.8"] {
     ee = e + 0
