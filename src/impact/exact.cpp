@@ -279,6 +279,8 @@ void ExactStepper::initialize(const State& s, std::int64_t l) {
     Model constant = model_;
     constant.harmonic.reset();
     solution_.emplace(constant, s);
+    rest_begin_ = solution_->rest_time().value_or(std::numeric_limits<double>::infinity());
+    rest_force_ = constant.f < 0.0 ? -constant.f : 0.0;
   }
 }
 

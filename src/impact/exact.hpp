@@ -105,6 +105,12 @@ class ExactStepper {
       s = solution_->flight_state(flight_, t1);
       return {};
     }
+    if (t0 > rest_begin_) {  // at rest: N = -f (f < 0) or 0, as impulse() gives it
+      s = {model_.phi, 0.0};
+      StepInfo info;
+      info.contact_force = rest_force_ * (t1 - t0) / h_;
+      return info;
+    }
     return closed_form_step(s, t0, t1);
   }
 
@@ -122,6 +128,7 @@ class ExactStepper {
   double h_;
   std::optional<ExactSolution> solution_;
   ExactSolution::Flight flight_;
+  double rest_begin_ = std::numeric_limits<double>::infinity(), rest_force_ = 0;
   std::optional<EventTrack> track_;
   EventSink sink_;
   std::int64_t l0_ = 0;
