@@ -14,14 +14,16 @@
 // then every later flight of the exact solution lasts at most 2 w / g_min for its launch speed w,
 // each impact speed is at most rho times the one before (the work of f over one flight changes
 // v^2/2 by at most (g_max - g_min) times its height w^2 / (2 g_min)), so all further impacts lie in
-// [t_k, t_k + W] and the particle rests from then on. The track makes the impact at t_k plastic and
-// sticks there: its state differs from the exact one only inside that window, by at most
-// (e V)^2 / (2 g_min) in u and rho V in v, and the accumulation time lies within W after the stick
-// event (chatter_window() gives W). For a constant force rho = e and W = 2 e V / (g (1 - e)), the
-// Zeno time t_inf of exact.hpp. Without such a certificate the impacts are followed one by one.
+// [t_k, t_k + W] and the particle rests after them (while f <= 0, (2-2)). The track makes the
+// impact at t_k plastic and sticks there: its state differs from the exact one only inside that
+// window, by at most (e V)^2 / (2 g_min) in u and rho V in v, and the accumulation time lies within
+// W after the stick event (chatter_window() gives W). For a constant force rho = e and W = 2 e V /
+// (g (1 - e)) is t_inf - t_k of exact.hpp. Without such a certificate the impacts are followed one
+// by one.
 //
-// Time is absolute here (the force depends on it); at(t) and advance() must be called with
-// non-decreasing t. Events go to the sink in increasing t as the track passes them.
+// Time is absolute here (the force depends on it); advance() must be called with non-decreasing t.
+// Events go to the sink in increasing t as the track passes them.
+//
 // The same event logic follows an expression force with OdeLaw (ode_flight.hpp, the method
 // event_driven): EventTrackOf<Law> takes the flights, the lift-off times, the resting impulse and
 // the chatter window from its Law and keeps the impacts, sticks and lifts itself.
