@@ -20,6 +20,9 @@ inline constexpr std::array<double, 19> kLemma1S = {
 // The schemes run to T = 40: what is left out is at most |E|max e^{-40 s} / s, relative e^{-44}
 // ~ 1e-19 at s = 1.1.
 inline constexpr double kLemma1SchemeT = 40.0;
+// The horizon of the chaotic driven case of the f(t) check (lemma1.cpp): short enough that the
+// result is not one rounding's.
+inline constexpr double kLemma1DrivenT = 5.0;
 // "Holds to quadrature accuracy": every |deviation| below this, ten times the relative accuracy
 // asked of GSL on each piece (1e-12, laplace.cpp) and 5e4 times the round-off of E (eps). The
 // cases that hold measure <= 4.4e-16; those that fail measure >= 1.8e-3 at s = 1.1.
