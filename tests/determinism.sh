@@ -18,7 +18,7 @@ variants=(
   "--set initial.u0=1e-3 --set initial.v0=0 --set time.T=1 --set force.f=-1 --set floor.phi=-0.5"
 )
 failed=0
-for method in direct fb_newton moreau_jean penalty exact; do
+for method in direct fb_newton moreau_jean penalty exact event_driven; do
   same=0 differ=0 refused=0
   for scene in experiments/*/*.toml; do
     grep -q '^\[method\]' "$scene" || continue
