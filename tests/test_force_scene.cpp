@@ -39,10 +39,6 @@ TEST_CASE("force: the harmonic keys and the expression are read into Model", "[f
   CHECK(s.model.f == 0.0);
   CHECK_FALSE(s.model.harmonic.has_value());
   CHECK(s.model.expression == "-9.80665 + 14.71 * sin(62.831853 * t)");
-  // A constant part and an expression add up.
-  s = parse(kBase + "[force]\nf = -1\nexpression = \"cos(t)\"\n");
-  CHECK(s.model.f == -1.0);
-  CHECK(s.model.expression == "cos(t)");
 
   // A constant force stays a constant: no harmonic part, no expression.
   s = parse(kBase + "[force]\nf = -9.80665\n");
@@ -92,6 +88,17 @@ TEST_CASE("force: an expression is exclusive with the harmonic keys", "[force]")
             Contains("not both"));
   CHECK_SCENE_ERROR(parse(kBase + "[force]\nexpression = \"sin(t)\"\n", {"force.omega=3"}),
                     Contains("is exclusive with force.omega = 3"));
+}
+
+// An expression is the whole force: f beside it would add a second constant part, which a scene
+// writing gravity in both would double silently.
+TEST_CASE("force: an expression is exclusive with the constant f", "[force]") {
+  CHECK_SCENE_ERROR(parse(kBase + "[force]\nf = -9.80665\nexpression = \"-9.80665 + sin(t)\"\n"),
+                    Contains("scene.toml: force.expression = '-9.80665 + sin(t)': is exclusive "
+                             "with force.f = -9.80665") &&
+                        Contains("whole force"));
+  CHECK_SCENE_ERROR(parse(kBase + "[force]\nf = -1\n", {"force.expression=\"sin(t)\""}),
+                    Contains("is exclusive with force.f = -1") && Contains("--unset force.f"));
 }
 
 TEST_CASE("force: an expression that is empty, too long or not evaluable at t = 0", "[force]") {

@@ -53,9 +53,10 @@ const KeySpec kForceKeys[] = {
     {.table = "force",
      .key = "expression",
      .type = KeyType::text,
-     .also = "at most 4096 characters, not with amplitude, omega or phase, not with method exact",
-     .meaning = "adds a muparser function of t to f, e.g. \"-9.80665 + 14.71 * sin(62.83 * t)\" "
-                "(pi is defined)",
+     .also =
+         "at most 4096 characters, not with f, amplitude, omega or phase, not with method exact",
+     .meaning = "the whole body force f(t) as a muparser function of t, e.g. \"-9.80665 + 14.71 * "
+                "sin(62.83 * t)\" (pi is defined)",
      .get = [](const Scene& s) -> KeyValue {
        return s.model.expression.empty() ? KeyValue() : KeyValue(s.model.expression);
      },
@@ -79,6 +80,13 @@ void check_force(const KeyReader& r, const toml::table& root, const Scene& scene
                  "leave [force] out for f = 0");
   const auto node = [&](std::string_view key) { return force->get(key); };
   const toml::node* expression = node("expression");
+  // An expression is the whole force: with f beside it, a scene that writes gravity in both
+  // (as f = -g above an expression "-g + ...") would double it without a word.
+  if (expression && node("f"))
+    r.fail_value("force", "expression", *expression,
+                 "is exclusive with force.f = " + show(*node("f")) +
+                     ": the expression gives the whole force f(t); write the constant part "
+                     "inside it (with --set, --unset force.f)");
   for (std::string_view key : kHarmonicKeys) {
     if (!node(key)) continue;
     if (expression)
