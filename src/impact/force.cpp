@@ -44,8 +44,14 @@ struct ForceFunction::Expression {
         throw std::invalid_argument("the expression is " + show(f0) +
                                     " at t = 0; it must be finite");
     } catch (const mu::Parser::exception_type& e) {
-      throw std::invalid_argument("the expression does not parse at position " +
-                                  std::to_string(e.GetPos() + 1) + ": " + e.GetMsg() +
+      // Positions are counted from 1 here; muparser's own message counts from 0, so it is left
+      // out where the position is all it adds.
+      const std::string at = " at position " + std::to_string(e.GetPos() + 1);
+      if (e.GetCode() == mu::ecUNASSIGNABLE_TOKEN)
+        throw std::invalid_argument("the expression uses \"" + e.GetToken() + "\"" + at +
+                                    ", which is no variable or function muparser knows (the only "
+                                    "variable is t; pi is defined)");
+      throw std::invalid_argument("the expression does not parse" + at + ": " + e.GetMsg() +
                                   " (the variable is t; pi is defined)");
     }
   }
