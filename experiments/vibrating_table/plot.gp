@@ -114,6 +114,8 @@ do for [format in "png pdf"] {
   set format x "10^{%L}"
   set xlabel "h [s]"
   set key bottom right box opaque noenhanced
+  # Room below the data for the key, which would hide a point there.
+  set offsets 0, 0, 0, graph 0.3
   set ytics auto
   do for [e in "0.5 0.8"] {
     ee = e + 0
@@ -130,6 +132,7 @@ do for [format in "png pdf"] {
          0 with lines lc rgb gray notitle
   }
   unset multiplot
+  unset offsets
   unset logscale x
   set format x "% h"
 }
