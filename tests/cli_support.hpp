@@ -12,7 +12,9 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <vector>
 
+#include "impact/events.hpp"
 #include "scene/read_scene.hpp"
 
 namespace impact::testing {
@@ -111,6 +113,29 @@ inline std::string scene_error(const std::string& text) {
     return e.what();
   }
   return "no error";
+}
+
+// The events of a CSV written by --events.
+inline std::vector<impact::Event> read_events(const std::string& text) {
+  std::istringstream in(text);
+  std::string line;
+  std::getline(in, line);
+  REQUIRE(line == "t,kind,v_before,v_after");
+  std::vector<impact::Event> events;
+  while (std::getline(in, line)) {
+    std::istringstream fields(line);
+    std::string t, kind, before, after;
+    std::getline(fields, t, ',');
+    std::getline(fields, kind, ',');
+    std::getline(fields, before, ',');
+    std::getline(fields, after, ',');
+    impact::Event e{std::stod(t), impact::EventKind::impact, std::stod(before), std::stod(after)};
+    if (kind == "stick") e.kind = impact::EventKind::stick;
+    if (kind == "lift") e.kind = impact::EventKind::lift;
+    REQUIRE((kind == "impact" || kind == "stick" || kind == "lift"));
+    events.push_back(e);
+  }
+  return events;
 }
 
 // The run must fail with `code`, a message matching `says`, and leave the directory as it was.

@@ -31,29 +31,6 @@ std::vector<double> bouncing_ball_impacts(double H, double e, int count) {
   return t;
 }
 
-// The events of a CSV written by --events.
-std::vector<Event> read_events(const std::string& text) {
-  std::istringstream in(text);
-  std::string line;
-  std::getline(in, line);
-  REQUIRE(line == "t,kind,v_before,v_after");
-  std::vector<Event> events;
-  while (std::getline(in, line)) {
-    std::istringstream fields(line);
-    std::string t, kind, before, after;
-    std::getline(fields, t, ',');
-    std::getline(fields, kind, ',');
-    std::getline(fields, before, ',');
-    std::getline(fields, after, ',');
-    Event e{std::stod(t), EventKind::impact, std::stod(before), std::stod(after)};
-    if (kind == "stick") e.kind = EventKind::stick;
-    if (kind == "lift") e.kind = EventKind::lift;
-    REQUIRE((kind == "impact" || kind == "stick" || kind == "lift"));
-    events.push_back(e);
-  }
-  return events;
-}
-
 // A minimal inelastic time-stepper with the step-mean force: symplectic Euler, and a step that
 // would end below the floor ends on it at rest. Its contact impulse is what the step removes.
 class InelasticEuler {

@@ -103,7 +103,7 @@ Lemma1Forcing lemma1_forcing(double amplitude, double omega, double cor, const M
   simulate(stepper, initial, grid, [&](std::int64_t l, const State& s, const StepInfo&) {
     if (l > 0) work_energy.step(l, s);
     energy.push_back(0.5 * s.v * s.v - force.at(grid.t(l)) * s.u);
-    energy_constant.push_back(0.5 * s.v * s.v - model.f * s.u);
+    energy_constant.push_back(impact::energy(model, s));
     work.push_back(work_energy.energy(s));
   });
   Lemma1Forcing r;

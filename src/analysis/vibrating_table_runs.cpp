@@ -15,11 +15,6 @@ namespace impact {
 
 namespace {
 
-double wrapped_phase(double x) {
-  const double r = std::fmod(x, 2 * std::numbers::pi);
-  return r < 0 ? r + 2 * std::numbers::pi : r;
-}
-
 // Collects the events of a run after the transient.
 struct EventCollector {
   const TableScene* scene;
@@ -31,7 +26,7 @@ struct EventCollector {
     if (kind == EventKind::impact) ++run->impacts;
     if (t < transient_end || run->events.size() >= max_events) return;
     run->events.push_back(
-        {t, kind, wrapped_phase(scene->omega * t + scene->phase), v_after / scene->speed_unit()});
+        {t, kind, wrap_phase(scene->omega * t + scene->phase), v_after / scene->speed_unit()});
   }
 };
 

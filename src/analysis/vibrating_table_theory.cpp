@@ -29,11 +29,6 @@ ForceFunction table_force(double gamma) {
   return ForceFunction(model);
 }
 
-double wrap_phase(double tau) {
-  const double r = std::fmod(tau, kTwoPi);
-  return r < 0 ? r + kTwoPi : r;
-}
-
 // The root of F in [lo, hi], where F changes sign once, by GSL's Brent solver until the bracket is
 // within epsabs + epsrel |x| (at most 200 iterations: the bracket shrinks by at least half every
 // few). F must not throw (GSL is C): a callback reports a failure as NaN, which ends here as an
@@ -73,6 +68,11 @@ double impact_root(const ForceFunction& force, const State& start, double t0, do
 }
 
 }  // namespace
+
+double wrap_phase(double tau) {
+  const double r = std::fmod(tau, kTwoPi);
+  return r < 0 ? r + kTwoPi : r;
+}
 
 double period_one_existence_threshold(double e, int n) {
   return std::numbers::pi * n * (1 - e) / (1 + e);

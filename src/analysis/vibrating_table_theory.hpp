@@ -28,6 +28,9 @@ struct PeriodOneOrbit {
   std::array<std::complex<double>, 2> eigenvalues{};
 };
 
+// tau reduced to [0, 2 pi): the phase of a time omega t + phase.
+double wrap_phase(double tau);
+
 // Gamma_1 = pi n (1 - e) / (1 + e): below it there is no period-1 orbit of period n.
 double period_one_existence_threshold(double e, int n);
 // Gamma_pd = sqrt(Gamma_1^2 + (2 (1 + e^2) / (1 + e)^2)^2): the stable period-1 orbit loses its
