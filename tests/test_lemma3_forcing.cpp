@@ -58,7 +58,7 @@ TEST_CASE("force_norms: sup, int |f| and rms of a harmonic force in closed form"
   CHECK(c.sup == 9.80665);
   CHECK(c.integral == 2 * 9.80665);
   // The bound with F = 0 is |v^0|, the constant-force lemma for f = 0.
-  CHECK(lemma3_velocity_bound(0.0, 0.0, State{1.0, -3.0}, 2.0) == 3.0);
+  CHECK(lemma3_bounds(0.0, 0.0, State{1.0, -3.0}, 2.0).velocity == 3.0);
 }
 
 TEST_CASE("with a constant force every reading is the lemma as printed (bounds.hpp)",

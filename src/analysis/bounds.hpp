@@ -29,6 +29,10 @@ struct Lemma3Bounds {
 };
 
 Lemma3Bounds lemma3_bounds(const Model& model, const State& initial, double T);
+// The same with |f| read as the number F and E^0 = (v^0)^2/2 - f_energy u^0, for a time-dependent
+// force under each reading of |f| (lemma3_forcing.hpp); the form above is F = |f|, f_energy = f.
+// A reading may make 2E^0 + 2F|u^0| + FT negative; V is then taken as 0.
+Lemma3Bounds lemma3_bounds(double F, double f_energy, const State& initial, double T);
 
 struct Lemma3Measurement {
   double T = 0;                // n h

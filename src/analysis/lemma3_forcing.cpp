@@ -80,12 +80,6 @@ ForceNorms force_norms(const Model& model, double T) {
   return n;
 }
 
-double lemma3_velocity_bound(double F, double f_energy, const State& initial, double T) {
-  const double E0 = 0.5 * initial.v * initial.v - f_energy * initial.u;
-  const double A = std::fmax(0.0, 2 * E0 + 2 * F * std::fabs(initial.u) + F * T);
-  return std::sqrt(A * (1 + F * T * std::exp(F * T)));  // (4-8)
-}
-
 Model ForcingCase::model() const {
   Model m;
   m.f = f;
@@ -95,9 +89,8 @@ Model ForcingCase::model() const {
 
 namespace {
 
-ForcingRatios ratios(double max_u, double max_v, double V, const State& initial, double T) {
-  return {max_v / V, max_u / (std::fabs(initial.u) + T / 2 * V),
-          max_u / (std::fabs(initial.u) + T * V)};
+ForcingRatios ratios(double max_u, double max_v, const Lemma3Bounds& b) {
+  return {max_v / b.velocity, max_u / b.displacement, max_u / b.displacement_corrected};
 }
 
 // The scalar |f| of a reading that is one number over [0, T].
@@ -153,9 +146,8 @@ ForcingRun run_forcing_case(const ForcingCase& c) {
     run.max_u = std::fmax(run.max_u, std::fabs(s.u));
     run.max_v = std::fmax(run.max_v, std::fabs(s.v));
     const double f_now = force.at(grid.t(l));
-    const ForcingRatios now =
-        ratios(std::fabs(s.u), std::fabs(s.v),
-               lemma3_velocity_bound(std::fabs(f_now), f_now, initial, run.T), initial, run.T);
+    const ForcingRatios now = ratios(std::fabs(s.u), std::fabs(s.v),
+                                     lemma3_bounds(std::fabs(f_now), f_now, initial, run.T));
     frozen = {std::fmax(frozen.velocity, now.velocity),
               std::fmax(frozen.displacement, now.displacement),
               std::fmax(frozen.displacement_full, now.displacement_full)};
@@ -170,8 +162,7 @@ ForcingRun run_forcing_case(const ForcingCase& c) {
     }
     const double F = scalar_force(reading, run.norms, model, run.T);
     const double f_energy = energy_force(reading, F, model, force.at(0));
-    run.readings[i] = ratios(run.max_u, run.max_v,
-                             lemma3_velocity_bound(F, f_energy, initial, run.T), initial, run.T);
+    run.readings[i] = ratios(run.max_u, run.max_v, lemma3_bounds(F, f_energy, initial, run.T));
   }
   const double P = std::fabs(c.v0) + run.norms.integral;
   run.proof_velocity = run.max_v / P;

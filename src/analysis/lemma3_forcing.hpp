@@ -29,6 +29,7 @@
 #include <string_view>
 #include <vector>
 
+#include "analysis/bounds.hpp"
 #include "analysis/energy_forcing.hpp"
 #include "impact/model.hpp"
 #include "impact/registry.hpp"
@@ -48,9 +49,6 @@ struct ForceNorms {
   double rms = 0;       // ((1/T) int_0^T f^2)^(1/2), GSL quadrature
 };
 ForceNorms force_norms(const Model& model, double T);
-
-// V of the header for the scalar |f| = F and the force f_E in E^0.
-double lemma3_velocity_bound(double F, double f_energy, const State& initial, double T);
 
 // One run's maxima against every reading (frozen: the worst step, max_l |v^l| / V(f(t_l)) and
 // max_l |u^l| / (|u^0| + (T/2) V(f(t_l)))), and against the proof's bound P.
