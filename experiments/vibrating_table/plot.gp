@@ -156,7 +156,7 @@ do for [format in "png pdf"] {
   set yrange [0:*]
   unset key
   names = "period_one period_two chaos sticking"
-  gammas = "1.3 1.6 1.9 1.03"
+  gammas = "1.3 1.6 1.75 1.03"
   labels = "'period 1' 'period 2' 'chaos' 'sticking and chattering'"
   do for [k = 1:4] {
     set title sprintf("%s: {/Symbol G} = %s", word(labels, k), word(gammas, k)) enhanced

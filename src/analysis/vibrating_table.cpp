@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -119,14 +120,19 @@ std::string thresholds_csv(const std::vector<TableThresholds>& thresholds) {
 
 // One trajectory per regime, from the exact downward sweep's state at that Gamma (on its
 // attractor), sampled every 1/400 period over four periods.
+// Each label is checked against the sweep's own classification at that Gamma (period: impacts
+// per repetition, 0 where any).
 struct Regime {
   std::string_view name;
   double e, gamma;
+  TableRegime regime;
+  int period;
 };
-constexpr std::array<Regime, 4> kTrajectoryRegimes{{{"period_one", 0.5, 1.3},
-                                                    {"period_two", 0.5, 1.6},
-                                                    {"chaos", 0.5, 1.9},
-                                                    {"sticking", 0.5, 1.03}}};
+constexpr std::array<Regime, 4> kTrajectoryRegimes{
+    {{"period_one", 0.5, 1.3, TableRegime::period_one, 1},
+     {"period_two", 0.5, 1.6, TableRegime::periodic, 2},
+     {"chaos", 0.5, 1.75, TableRegime::aperiodic, 0},
+     {"sticking", 0.5, 1.03, TableRegime::sticking, 0}}};
 
 std::string trajectories_csv(const std::vector<DiagramSweep>& sweeps) {
   std::ostringstream csv;
@@ -136,6 +142,12 @@ std::string trajectories_csv(const std::vector<DiagramSweep>& sweeps) {
       if (s.method != "exact" || s.up || s.e != r.e) continue;
       for (const SweepPoint& p : s.points) {
         if (std::fabs(p.gamma - r.gamma) > 1e-9) continue;
+        if (p.classification.regime != r.regime ||
+            (r.period != 0 && p.classification.period != r.period))
+          throw std::logic_error("vibrating_table: the trajectory labelled " + std::string(r.name) +
+                                 " at Gamma = " + std::to_string(r.gamma) + " is classified " +
+                                 std::string(regime_name(p.classification.regime)) + " (period " +
+                                 std::to_string(p.classification.period) + ") by the sweep");
         for (const TableSample& x :
              sample_table(p.end, method_named("exact"), p.end.period() / 400, 4))
           csv << r.name << ',' << r.e << ',' << round_trip(r.gamma) << ',' << round_trip(x.t) << ','
