@@ -160,7 +160,7 @@ asan-test: deps
 	@cmake -S . -B $(ASAN_BUILD) $(CMAKE_FLAGS) -DIMPACT_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 	  > $(ASAN_BUILD).configure.log 2>&1 || { cat $(ASAN_BUILD).configure.log; exit 1; }
 	@cmake --build $(ASAN_BUILD) -j $(JOBS)
-	cd $(ASAN_BUILD) && ctest --output-on-failure -j $(JOBS)
+	cd $(ASAN_BUILD) && ctest --output-on-failure -j $(JOBS) -LE scale
 
 fuzz:
 	@IMPACT_EXTRA_PACKAGES="clang libclang-rt-14-dev" bash .ci/deps.sh

@@ -118,9 +118,9 @@ TEST_CASE("events: --events is written whole or not at all, and not over --out",
   TempDir dir;
   dir.write("s.toml", kShort);
   CHECK_FAILS_CLEANLY(dir, "run s.toml --events -", 2,
-                      Contains("--events and --out name the same output"));
+                      Contains("--events and --out lead to the same output"));
   CHECK_FAILS_CLEANLY(dir, "run s.toml -o a.csv --events a.csv", 2,
-                      Contains("--events and --out name the same output"));
+                      Contains("--events and --out lead to the same output"));
   CHECK_FAILS_CLEANLY(dir, "run s.toml -o a.csv --events s.toml", 2,
                       Contains("--events names the scene file itself"));
   CHECK_FAILS_CLEANLY(dir, "run s.toml -o a.csv --events no/such/dir/e.csv", 2,

@@ -2,6 +2,7 @@
 #include <CLI/CLI.hpp>
 #include <csignal>
 #include <cstdio>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -75,15 +76,26 @@ int main(int argc, char** argv) {
                    "error, with the wall time")
       ->check(CLI::IsMember({"exact"}));
   run_cmd->add_flag("--force", run_options.force,
-                    "Write the rows even when there are more than 1e8 of them (or 4 GB)");
+                    "Write the rows and the events even when there are more than --max-rows of "
+                    "them (or 4 GB)");
+  run_cmd
+      ->add_option("--max-rows", run_options.max_rows,
+                   "The most rows a run writes without --force (it refuses to start beyond), and "
+                   "the most events (it stops when they pass it)")
+      ->default_val(1e8)
+      ->check(CLI::PositiveNumber);
   run_cmd->add_flag("--quiet,-q", run_options.quiet,
                     "Do not print the progress and summary lines on standard error");
   run_cmd->footer(
       impact::wrap(
           "Rows are written at t = l h for every output.every-th step l, and always for "
           "the first and the last step; numbers have 17 significant digits, so they "
-          "read back exactly.\nN in the row at t_l is N^{l-1} of (4-1): the contact impulse "
-          "over (t_{l-1}, t_l] divided by h.",
+          "read back exactly.\nA row stands for the steps since the previous row: u, v and E "
+          "are the state at its t_l; N is the mean contact force over those steps (with "
+          "output.every = 1, N^{l-1} of (4-1): the contact impulse over (t_{l-1}, t_l] "
+          "divided by h), so that the row's interval times N is the contact impulse in it and "
+          "no impact is lost between rows; iterations is their sum, so that the column adds "
+          "up to the run's total.",
           impact::cli::kHelpWidth) +
       "\n\n" + impact::scene_help(impact::cli::kHelpWidth) + "\n" + epilogue);
 
@@ -132,6 +144,12 @@ int main(int argc, char** argv) {
     return e.bad_path ? kBadInput : kNumericalFailure;
   } catch (const impact::NumericalError& e) {
     std::fprintf(stderr, "impact: numerical failure: %s%s\n", e.what(),
+                 in_place ? "" : " (no output file written)");
+    return kNumericalFailure;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr,
+                 "impact: error: out of memory: the process may not allocate what the run needs "
+                 "(ulimit -v?)%s\n",
                  in_place ? "" : " (no output file written)");
     return kNumericalFailure;
   } catch (const std::exception& e) {

@@ -14,7 +14,8 @@ struct RunOptions {
   std::string events;  // empty: no events; "-": standard output
   bool quiet = false;
   bool against_exact = false;
-  bool force = false;  // write more than 1e8 rows
+  bool force = false;     // no limit on the rows and events written
+  double max_rows = 1e8;  // without force: the most rows, and the most events, a run writes
 };
 
 // Runs the scene and returns the exit code (0). Throws SceneError (bad input), OutputError,

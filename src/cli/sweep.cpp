@@ -11,6 +11,7 @@
 #include <sstream>
 #include <thread>
 
+#include "cli/progress.hpp"
 #include "cli/sweep_csv.hpp"
 #include "cli/sweep_runner.hpp"
 #include "impact/ensemble.hpp"
@@ -19,12 +20,6 @@
 
 namespace impact::cli {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 Shard parse_shard(const std::string& text) {
   Shard s;
@@ -46,12 +41,6 @@ std::string read_file(const std::string& path) {
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();
-}
-
-bool same_file(const std::string& a, const std::string& b) {
-  struct stat sa, sb;
-  return stat(a.c_str(), &sa) == 0 && stat(b.c_str(), &sb) == 0 && sa.st_dev == sb.st_dev &&
-         sa.st_ino == sb.st_ino;
 }
 
 }  // namespace
@@ -88,7 +77,7 @@ CLI::App* add_sweep_command(CLI::App& app, SweepOptions& o) {
                   "Output CSV file (default: standard output), renamed into place when complete");
   cmd->add_flag("--quiet,-q", o.quiet, "Do not print the progress and summary lines");
   std::string keys;
-  for (std::string_view k : sweep_keys()) keys += (keys.empty() ? "" : ", ") + std::string(k);
+  for (const std::string& k : sweep_keys()) keys += (keys.empty() ? "" : ", ") + k;
   cmd->footer(
       "SPEC: a:b:n      n values from a to b, evenly spaced, both ends included\n"
       "      a:b:n:log  n values evenly spaced in log10 (a, b > 0)\n"
@@ -142,7 +131,7 @@ int run_sweep(const SweepOptions& o) {
   const SweepGrid grid(o.scene, o.sets, std::move(axes));
 
   const bool to_stdout = o.out.empty() || o.out == "-";
-  if (!to_stdout && same_file(o.out, o.scene))
+  if (!to_stdout && same_output(o.out, o.scene))
     throw OutputError(o.out + ": --out names the scene file itself; give another file name", true);
   AtomicFile file(o.out);
   std::string head;

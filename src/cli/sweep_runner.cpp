@@ -8,19 +8,17 @@
 #include <exception>
 #include <mutex>
 #include <optional>
+#include <stdexcept>
+#include <string>
+#include <system_error>
 #include <thread>
 #include <tuple>
 
+#include "cli/progress.hpp"
 #include "impact/summary.hpp"
 
 namespace impact::cli {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 // Points per chunk, the unit a thread takes: 192 fills the ensemble's padding (ensemble.cpp)
 // exactly.
@@ -105,7 +103,10 @@ class Runner {
     } catch (const NumericalError& e) {
       result.failure = e.what();
     }
-    if (timed_) result.wall_s = seconds_since(start);
+    // The method's own time: the reference's is reported apart (reference_s).
+    if (timed_)
+      result.wall_s =
+          seconds_since(start) - (result.outcome ? result.outcome->reference_seconds : 0);
   }
 
   // Groups the candidates by grid and method; a group of at least kMinEnsemble points is stepped
@@ -163,45 +164,8 @@ class Runner {
   bool timed_ = false;
 };
 
-// "impact sweep: 42% of 1000000 points, 81234 points/s, 5 s, about 7 s left", redrawn in place
-// on a terminal, as `impact run` shows its steps: nothing for the first 2 s, then twice a second.
-class SweepProgress {
- public:
-  SweepProgress(bool enabled, std::int64_t points, Clock::time_point start)
-      : enabled_(enabled), points_(points), start_(start) {}
-  ~SweepProgress() { finish(); }
-  SweepProgress(const SweepProgress&) = delete;
-  SweepProgress& operator=(const SweepProgress&) = delete;
-
-  void update(std::int64_t done) {
-    const double elapsed = seconds_since(start_);
-    if (!enabled_ || done == 0 || elapsed < 2.0 || elapsed < shown_ + 0.5) return;
-    shown_ = elapsed;
-    const double rate = static_cast<double>(done) / elapsed;
-    std::fprintf(stderr,
-                 "\rimpact sweep: %3.0f%% of %lld points, %.0f points/s, %.0f s, about %.0f s "
-                 "left\x1b[K",
-                 100.0 * static_cast<double>(done) / static_cast<double>(points_),
-                 static_cast<long long>(points_), rate, elapsed,
-                 static_cast<double>(points_ - done) / rate);
-    drawn_ = true;
-  }
-  void finish() {
-    if (drawn_) std::fputs("\r\x1b[K", stderr);
-    drawn_ = false;
-  }
-
- private:
-  bool enabled_;
-  std::int64_t points_;
-  Clock::time_point start_;
-  double shown_ = 0;
-  bool drawn_ = false;
-};
-
 // At most 4 chunks per thread wait to be written (flat memory).
-std::int64_t run_chunks(const Runner& runner, int threads, AtomicFile& file,
-                        SweepProgress& progress) {
+std::int64_t run_chunks(const Runner& runner, int threads, AtomicFile& file, Progress& progress) {
   const std::int64_t chunks = runner.chunks(), window = 4 * static_cast<std::int64_t>(threads);
   std::vector<Runner::Output> slots(static_cast<std::size_t>(window));
   std::vector<char> ready(static_cast<std::size_t>(window), 0);
@@ -246,7 +210,21 @@ std::int64_t run_chunks(const Runner& runner, int threads, AtomicFile& file,
       changed.notify_all();
     }
   };
-  for (int t = 0; t < threads; ++t) pool.emplace_back(work);
+  for (int t = 0; t < threads; ++t) {
+    try {
+      pool.emplace_back(work);
+    } catch (const std::system_error& e) {
+      // Without a thread the sweep cannot go on; say which one and why (the system's words alone,
+      // "Resource temporarily unavailable", do not say what was asked).
+      throw std::runtime_error(
+          "cannot start thread " + std::to_string(t + 1) + " of " + std::to_string(threads) + ": " +
+          e.code().message() +
+          (t > 0 ? " (the system's limit on memory or processes; try --threads " +
+                       std::to_string(t) + ")"
+                 : " (the system's limit on memory or processes: each thread needs its stack, "
+                   "8 MiB by default; see ulimit -v and ulimit -u)"));
+    }
+  }
   const Stop stopper{mutex, changed, stop};
   std::int64_t failed = 0, done = 0;
   for (std::int64_t c = 0; c < chunks; ++c) {
@@ -286,7 +264,7 @@ SweepRun run_points(const SweepGrid& grid, const std::vector<Quantity>& quantiti
                     bool against_exact, const Shard& shard, int threads,
                     const std::string& instruction_set, AtomicFile& file, bool progress) {
   const Runner runner(grid, quantities, against_exact, shard, instruction_set);
-  SweepProgress shown(progress, runner.points(), Clock::now());
+  Progress shown(progress, runner.points(), Clock::now(), "impact sweep", "points", true);
   const std::int64_t failed = run_chunks(runner, threads, file, shown);
   return {runner.points(), failed};
 }

@@ -71,7 +71,7 @@ void write_event_header(std::FILE* out) {
   std::fputs("t,kind,v_before,v_after\n", out);
 }
 
-void write_event(std::FILE* out, const Event& event) {
+std::size_t write_event(std::FILE* out, const Event& event) {
   char buf[128];  // three fields of at most 24 characters, a kind and the separators
   char* p = format_double(buf, buf + sizeof buf, event.t);
   *p++ = ',';
@@ -82,7 +82,9 @@ void write_event(std::FILE* out, const Event& event) {
   *p++ = ',';
   p = format_double(p, buf + sizeof buf, event.v_after);
   *p++ = '\n';
-  std::fwrite(buf, 1, static_cast<std::size_t>(p - buf), out);
+  const auto bytes = static_cast<std::size_t>(p - buf);
+  std::fwrite(buf, 1, bytes, out);
+  return bytes;
 }
 
 }  // namespace impact

@@ -17,6 +17,7 @@
 //  - a lift is the first free step after a stick, dated t_l, the last time the particle was held.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <cstdio>
 
@@ -62,8 +63,8 @@ class EventLog {
 };
 
 // The CSV of `impact run --events`: the header t,kind,v_before,v_after, and one row per event with
-// numbers in round-trip precision (17 significant digits).
+// numbers in round-trip precision (17 significant digits). write_event returns the row's bytes.
 void write_event_header(std::FILE* out);
-void write_event(std::FILE* out, const Event& event);
+std::size_t write_event(std::FILE* out, const Event& event);
 
 }  // namespace impact

@@ -12,8 +12,7 @@
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
-
-#include "impact/run.hpp"
+#include <optional>
 
 namespace impact {
 namespace {
@@ -129,7 +128,63 @@ int own_descriptor(const std::string& link) {
 // Linux follows at most 40 symbolic links in one path (path_resolution(7)).
 constexpr int kMaxLinks = 40;
 
+// Where writing `path` leads: symbolic links followed one at a time, as the kernel would (a
+// dangling link leads to the file it names, which the output then creates, as `>` in a shell),
+// up to a link in /proc (/dev/stdout, /proc/self/fd/N), which stands for an open file rather
+// than for the path it shows. Throws OutputError on a loop of links.
+struct Destination {
+  std::string target;
+  bool proc_link = false;
+};
+Destination destination(const std::string& path) {
+  Destination d{path};
+  struct stat info;
+  for (int links = 0; lstat(d.target.c_str(), &info) == 0 && S_ISLNK(info.st_mode); ++links) {
+    if (in_proc(d.target)) {
+      d.proc_link = true;
+      return d;
+    }
+    if (links == kMaxLinks) {
+      errno = ELOOP;
+      throw OutputError(path + ": cannot open the output file: " + why(), true);
+    }
+    d.target = link_target(d.target);
+  }
+  return d;
+}
+
+// What a path names, for comparing two of them: the file it reaches (device and inode), or, for
+// a file that does not exist yet, the directory it would be created in and its name; standard
+// output ("-" or "") is the file that descriptor 1 is open on.
+struct Identity {
+  dev_t device = 0;
+  ino_t inode = 0;
+  std::string name;  // the new file's name in that directory; empty for an existing file
+  bool operator==(const Identity&) const = default;
+};
+std::optional<Identity> identity(const std::string& path) {
+  struct stat info;
+  const auto of = [&](int ok) {
+    return ok == 0 ? std::optional<Identity>(Identity{info.st_dev, info.st_ino, {}}) : std::nullopt;
+  };
+  if (path.empty() || path == "-") return of(fstat(STDOUT_FILENO, &info));
+  const Destination d = destination(path);
+  if (d.proc_link) {
+    const int fd = own_descriptor(d.target);
+    return of(fd >= 0 ? fstat(fd, &info) : stat(d.target.c_str(), &info));
+  }
+  if (stat(d.target.c_str(), &info) == 0) return of(0);
+  if (stat(directory_of(d.target).c_str(), &info) != 0) return std::nullopt;
+  return Identity{info.st_dev, info.st_ino, d.target.substr(d.target.rfind('/') + 1)};
+}
+
 }  // namespace
+
+bool same_output(const std::string& a, const std::string& b) {
+  if (a == b) return true;
+  const auto x = identity(a), y = identity(b);
+  return x && y && *x == *y;
+}
 
 AtomicFile::AtomicFile(const std::string& path) : path_(path) {
   if (path.empty() || path == "-") {
@@ -142,23 +197,15 @@ AtomicFile::AtomicFile(const std::string& path) : path_(path) {
                           " bytes long; the limit is " + std::to_string(PATH_MAX - 1) +
                           " (PATH_MAX)",
                       true);
-  // Follow symbolic links one at a time to the file that writing reaches, as the kernel would; a
-  // dangling link leads to the file it names, which the output then creates (as `>` in a shell).
-  std::string target = path;
-  struct stat info;
-  for (int links = 0; lstat(target.c_str(), &info) == 0 && S_ISLNK(info.st_mode); ++links) {
-    // Renaming over the file such a link shows would replace, e.g., the log that standard output
-    // is appended to, or write where no descriptor of the caller points.
-    if (in_proc(target)) {
-      open_in_place(target);
-      return;
-    }
-    if (links == kMaxLinks) {
-      errno = ELOOP;
-      throw OutputError(path + ": cannot open the output file: " + why(), true);
-    }
-    target = link_target(target);
+  const Destination d = destination(path);
+  const std::string& target = d.target;
+  // Renaming over the file such a link shows would replace, e.g., the log that standard output
+  // is appended to, or write where no descriptor of the caller points.
+  if (d.proc_link) {
+    open_in_place(target);
+    return;
   }
+  struct stat info;
   const bool exists = stat(target.c_str(), &info) == 0;
   if (exists && S_ISDIR(info.st_mode))
     throw OutputError(path + ": --out names a directory; give a file name", true);
@@ -195,6 +242,11 @@ AtomicFile::AtomicFile(const std::string& path) : path_(path) {
                         ".tmp.XXXXXX";
   std::vector<char> name(pattern.begin(), pattern.end());
   name.push_back('\0');
+  // Everything the object holds is allocated before the temporary exists, so that running out of
+  // memory cannot leave it behind (a constructor that throws has no destructor to remove it).
+  buffer_.resize(1 << 20);
+  temp_.reserve(name.size());
+  target_ = target;
   // From mkstemp to the handler knowing the name, signals wait: one that came in between would
   // leave the temporary.
   remove_temp_on_fatal_signals();
@@ -213,8 +265,7 @@ AtomicFile::AtomicFile(const std::string& path) : path_(path) {
   sigprocmask(SIG_SETMASK, &previous, nullptr);
   errno = mkstemp_error;
   if (fd < 0) throw OutputError(path + ": cannot create the output file: " + why(), true);
-  temp_ = name.data();
-  target_ = target;
+  temp_.assign(name.data());
   // mkstemp makes the file 0600: keep the mode of the file being replaced, or give a new one the
   // permissions a plain fopen would.
   mode_t mask = umask(0);
@@ -223,12 +274,11 @@ AtomicFile::AtomicFile(const std::string& path) : path_(path) {
   stream_ = fdopen(fd, "w");
   if (!stream_) {
     const int error = errno;
-    close(fd);
+    ::close(fd);
     forget_temp();
     errno = error;
     throw OutputError(path + ": cannot open the output file: " + why(), true);
   }
-  buffer_.resize(1 << 20);
   std::setvbuf(stream_, buffer_.data(), _IOFBF, buffer_.size());
 }
 
@@ -241,7 +291,7 @@ void AtomicFile::open_in_place(const std::string& target) {
     stream_ = fd >= 0 ? fdopen(fd, "w") : nullptr;
     if (!stream_ && fd >= 0) {
       const int error = errno;
-      close(fd);
+      ::close(fd);
       errno = error;
     }
   } else {
@@ -281,12 +331,13 @@ void AtomicFile::check() const {
         false);
 }
 
-void AtomicFile::commit() {
+void AtomicFile::close() {
   if (stream_ == stdout) {
     if (std::fflush(stream_) != 0 || std::ferror(stream_))
       throw OutputError("standard output: write failed: " + why(), false);
     return;
   }
+  if (!stream_) return;
   bool failed = std::fflush(stream_) != 0 || std::ferror(stream_);
   int err = errno;
   failed = (std::fclose(stream_) != 0) || failed;
@@ -295,7 +346,11 @@ void AtomicFile::commit() {
     errno = err ? err : errno;
     throw OutputError(path_ + ": write failed: " + why(), false);
   }
-  if (temp_.empty()) return;  // written in place
+}
+
+void AtomicFile::commit() {
+  close();
+  if (temp_.empty() || committed_) return;  // standard output, or written in place
   if (std::rename(temp_.c_str(), target_.c_str()) != 0)
     throw OutputError(path_ + ": cannot move the output into place: " + why(), false);
   committed_ = true;
@@ -316,8 +371,8 @@ char* format_double(char* buf, char* end, double x) {
   return std::to_chars(buf, end, x, std::chars_format::general, 17).ptr;
 }
 
-CsvWriter::CsvWriter(std::FILE* out, const Model& model, std::vector<Channel> channels)
-    : out_(out), model_(model), channels_(std::move(channels)) {}
+CsvWriter::CsvWriter(std::FILE* out, std::vector<Channel> channels)
+    : out_(out), channels_(std::move(channels)) {}
 
 void CsvWriter::header() {
   std::string line = "t";
@@ -329,7 +384,8 @@ void CsvWriter::header() {
   std::fputs(line.c_str(), out_);
 }
 
-void CsvWriter::row(double t, const State& s, const StepInfo& info) {
+void CsvWriter::row(double t, const OutputRow& row) {
+  const State& s = row.state;
   // At most 1 + 5 fields of 24 characters (-1.2345678901234567e-308) and their separators.
   char buf[256];
   char* p = format_double(buf, buf + sizeof buf, t);
@@ -343,22 +399,13 @@ void CsvWriter::row(double t, const State& s, const StepInfo& info) {
         p = format_double(p, buf + sizeof buf, s.v);
         break;
       case Channel::N:
-        p = format_double(p, buf + sizeof buf, info.contact_force);
+        p = format_double(p, buf + sizeof buf, row.contact_force);
         break;
-      case Channel::E: {
-        const double E = work_ ? work_->energy(s) : energy(model_, s);
-        if (!std::isfinite(E)) [[unlikely]] {
-          char when[32];
-          throw NumericalError("at t = " + std::string(when, format_double(when, when + 32, t)) +
-                               (work_ ? ": the energy v^2/2 - f(0) u(0) - W(t) overflows"
-                                      : ": the energy v^2/2 - f u (3-1) overflows") +
-                               " (u and v are finite)");
-        }
-        p = format_double(p, buf + sizeof buf, E);
+      case Channel::E:
+        p = format_double(p, buf + sizeof buf, row.energy);
         break;
-      }
       case Channel::iterations:
-        p = std::to_chars(p, buf + sizeof buf, info.iterations).ptr;
+        p = std::to_chars(p, buf + sizeof buf, row.iterations).ptr;
         break;
     }
   }

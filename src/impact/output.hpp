@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "impact/model.hpp"
+#include "impact/row_stream.hpp"
 #include "impact/scene.hpp"
-#include "impact/work_energy.hpp"
 
 namespace impact {
 
@@ -42,6 +42,11 @@ class AtomicFile {
   // Throws OutputError if a write has failed so far (e.g. the disk is full), so that a long run
   // can stop early instead of computing output that cannot be stored.
   void check() const;
+  // Flushes and closes the file; throws OutputError if anything written so far failed. The
+  // output is not in place yet: a caller that writes several files closes them all, then
+  // commits them, so that a failure of one replaces none.
+  void close();
+  // close() if not done, then renames the temporary over the target.
   void commit();
   // Written as it goes (standard output, a device, a pipe, a descriptor), not through a temporary.
   bool in_place() const { return temp_.empty(); }
@@ -59,40 +64,24 @@ class AtomicFile {
   bool committed_ = false;
 };
 
-// Which steps get a row: l = 0, every, 2 every, ... and always the last step. Comparing l with the
-// next row's index instead of computing l % every keeps the division out of the step loop; every is
-// capped at `last` so that the next index cannot overflow (output.every may be up to 2^63 - 1).
-class RowSchedule {
- public:
-  RowSchedule(std::int64_t every, std::int64_t last)
-      : every_(every < last ? every : (last > 0 ? last : 1)), last_(last) {}
-  bool due(std::int64_t l) {
-    if (l != next_ && l != last_) return false;
-    next_ = l + every_;
-    return true;
-  }
-
- private:
-  std::int64_t every_, last_, next_ = 0;
-};
-
 // Writes the header `t,<channels>` and one row per written step.
 class CsvWriter {
  public:
-  CsvWriter(std::FILE* out, const Model& model, std::vector<Channel> channels);
-  // The E channel of a time-dependent force: v^2/2 - f(0) u(0) - W(t) from `work`, which the
-  // caller feeds every step (work_energy.hpp); without it, E is (3-1), v^2/2 - f u.
-  void use_work(const WorkEnergy* work) { work_ = work; }
+  CsvWriter(std::FILE* out, std::vector<Channel> channels);
   void header();
-  // Throws NumericalError if the energy channel overflows (u and v finite, E not).
-  void row(double t, const State& s, const StepInfo& info);
+  // The row at t = row.l h (row_stream.hpp), its E as run_scene() filled it in.
+  void row(double t, const OutputRow& row);
 
  private:
   std::FILE* out_;
-  Model model_;
   std::vector<Channel> channels_;
-  const WorkEnergy* work_ = nullptr;
 };
+
+// Whether two paths (given as outputs, or an output and an input) lead to the same file: the same
+// file reached (symbolic links followed, /dev/stdout and /dev/fd/N as the descriptor they stand
+// for, "-" as standard output), or, for a file not there yet, the same name in the same directory
+// (so ./new.csv, sub/../new.csv and an absolute spelling are one).
+bool same_output(const std::string& a, const std::string& b);
 
 // Appends x in round-trip precision (17 significant digits) to buf; returns the new end.
 char* format_double(char* buf, char* end, double x);

@@ -45,7 +45,9 @@ PointOutcome summarize(const Scene& scene, bool against_exact) {
   }
   PointSummary result = summary.result(run);
   if (work) result.energy_final = work->energy(result.final);
-  return {result, errors ? std::optional<ErrorNorms>(errors->result(run)) : std::nullopt};
+  if (!errors) return {result, std::nullopt, 0.0};
+  const ErrorNorms norms = errors->result(run);
+  return {result, norms, errors->reference_seconds()};
 }
 
 std::optional<EnsembleKind> ensemble_kind(const Scene& scene) {

@@ -65,6 +65,7 @@ class SummaryObserver {
 struct PointOutcome {
   PointSummary summary;
   std::optional<ErrorNorms> errors;  // with against_exact
+  double reference_seconds = 0;      // the wall time the reference took (against_exact)
 };
 
 // Runs the scene's method through simulate(), as `impact run` does, with a SummaryObserver (and an

@@ -1,7 +1,6 @@
 #include "scene/sweep_grid.hpp"
 
 #include <algorithm>
-#include <array>
 #include <bit>
 #include <charconv>
 #include <cmath>
@@ -12,12 +11,11 @@
 #include "impact/output.hpp"
 #include "impact/work_energy.hpp"
 #include "scene/read_scene.hpp"
+#include "scene/scene_keys.hpp"
 #include "scene/toml_text.hpp"
 
 namespace impact {
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // A finite decimal number, the whole of `text` (a leading + allowed).
 std::optional<double> parse_number(std::string_view text) {
@@ -103,105 +101,85 @@ std::int64_t SweepAxis::largest() const {
   return std::max_element(list_.begin(), list_.end()) - list_.begin();
 }
 
-// A key --vary accepts: how the scene reader stores its value in a Scene.
-struct SweepGrid::Key {
-  std::string_view name;
-  bool integer;  // read as a TOML integer
-  double (*get)(const Scene&);
-  void (*set)(Scene&, double);
-};
-
 namespace {
 
-// A method key's value, NaN when the scene's method has no such key.
-template <class Params, auto Member>
-double method_key(const Scene& s) {
-  const Params* p = std::get_if<Params>(&s.method);
-  return p ? static_cast<double>(p->*Member) : kNaN;
-}
-// Set only after the scene reader accepted the key for the scene's method.
-template <class Params, auto Member>
-void set_method_key(Scene& s, double x) {
-  using Field = std::remove_reference_t<decltype(std::declval<Params&>().*Member)>;
-  std::get<Params>(s.method).*Member = static_cast<Field>(x);
-}
-template <class Params, auto Member>
-constexpr SweepGrid::Key method_entry(std::string_view name, bool integer = false) {
-  return {name, integer, &method_key<Params, Member>, &set_method_key<Params, Member>};
+// The keys --vary accepts: the numbers and integers of the scene reader's key tables
+// (scene_keys.hpp), whose accessors store them in a Scene as the reader does; a [method] key is
+// the scene's method's.
+// output.every is a number too, but a sweep writes a summary per point, not rows.
+bool numeric(const KeySpec& spec) {
+  return (spec.type == KeyType::number || spec.type == KeyType::integer) && spec.table != "output";
 }
 
-// A key of the harmonic force, NaN when the scene has none; set only after the scene reader
-// accepted the point, whose scene then has one.
-template <auto Member>
-constexpr SweepGrid::Key harmonic_entry(std::string_view name) {
-  return {name, false,
-          [](const Scene& s) { return s.model.harmonic ? *s.model.harmonic.*Member : kNaN; },
-          [](Scene& s, double x) { s.model.harmonic.value().*Member = x; }};
+std::string full_name(const KeySpec& spec) {
+  return std::string(spec.table) + "." + std::string(spec.key);
 }
 
-constexpr SweepGrid::Key kKeys[] = {
-    {"initial.u0", false, [](const Scene& s) { return s.initial.u; },
-     [](Scene& s, double x) { s.initial.u = x; }},
-    {"initial.v0", false, [](const Scene& s) { return s.initial.v; },
-     [](Scene& s, double x) { s.initial.v = x; }},
-    {"floor.phi", false, [](const Scene& s) { return s.model.phi; },
-     [](Scene& s, double x) { s.model.phi = x; }},
-    {"floor.cor", false, [](const Scene& s) { return s.model.cor.value_or(kNaN); },
-     [](Scene& s, double x) { s.model.cor = x; }},
-    {"force.f", false, [](const Scene& s) { return s.model.f; },
-     [](Scene& s, double x) { s.model.f = x; }},
-    harmonic_entry<&Harmonic::amplitude>("force.amplitude"),
-    harmonic_entry<&Harmonic::omega>("force.omega"),
-    harmonic_entry<&Harmonic::phase>("force.phase"),
-    {"time.T", false, [](const Scene& s) { return s.T; }, [](Scene& s, double x) { s.T = x; }},
-    {"time.h", false, [](const Scene& s) { return s.grid.h; },
-     [](Scene& s, double x) { s.grid.h = x; }},
-    method_entry<MoreauJeanParams, &MoreauJeanParams::theta>("method.theta"),
-    method_entry<FbNewtonParams, &FbNewtonParams::epsilon>("method.epsilon"),
-    method_entry<FbNewtonParams, &FbNewtonParams::tolerance>("method.tolerance"),
-    method_entry<FbNewtonParams, &FbNewtonParams::max_iterations>("method.max_iterations", true),
-    method_entry<PenaltyParams, &PenaltyParams::stiffness>("method.stiffness"),
-    method_entry<PenaltyParams, &PenaltyParams::rtol>("method.rtol"),
-    method_entry<PenaltyParams, &PenaltyParams::atol>("method.atol"),
-};
-
-constexpr auto kKeyNames = [] {
-  std::array<std::string_view, std::size(kKeys)> names;
-  for (std::size_t i = 0; i < names.size(); ++i) names[i] = kKeys[i].name;
+// Every number a scene reads, once each ("method.rtol" is penalty's and event_driven's).
+const std::vector<std::string>& numeric_key_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> out;
+    for (const auto keys : {scene_keys(), method_keys()})
+      for (const KeySpec& spec : keys)
+        if (numeric(spec) && std::find(out.begin(), out.end(), full_name(spec)) == out.end())
+          out.push_back(full_name(spec));
+    return out;
+  }();
   return names;
-}();
+}
 
-// Two scenes are the same run: every number a sweep can vary, bit for bit, and the rest.
+// The spec of `name` for a scene of `method`; nullptr when that method reads no such number.
+const KeySpec* numeric_spec(const std::string& name, std::string_view method) {
+  for (const auto keys : {scene_keys(), method_keys()})
+    for (const KeySpec& spec : keys)
+      if (numeric(spec) && full_name(spec) == name &&
+          (spec.method.empty() || spec.method == method))
+        return &spec;
+  return nullptr;
+}
+
+bool same_bits(double a, double b) {
+  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+}
+
+// Two scenes are the same run: every number bit for bit, and the rest.
 bool same_scene(const Scene& a, const Scene& b) {
-  for (const auto& key : kKeys)
-    if (std::bit_cast<std::uint64_t>(key.get(a)) != std::bit_cast<std::uint64_t>(key.get(b)))
-      return false;
-  return a.model.cor.has_value() == b.model.cor.has_value() &&
-         a.model.harmonic.has_value() == b.model.harmonic.has_value() &&
-         a.model.expression == b.model.expression && a.grid.steps == b.grid.steps &&
+  const Model &x = a.model, &y = b.model;
+  const bool same_harmonic =
+      x.harmonic.has_value() == y.harmonic.has_value() &&
+      (!x.harmonic || (same_bits(x.harmonic->amplitude, y.harmonic->amplitude) &&
+                       same_bits(x.harmonic->omega, y.harmonic->omega) &&
+                       same_bits(x.harmonic->phase, y.harmonic->phase)));
+  return same_bits(a.initial.u, b.initial.u) && same_bits(a.initial.v, b.initial.v) &&
+         same_bits(x.phi, y.phi) && same_bits(x.f, y.f) && x.cor.has_value() == y.cor.has_value() &&
+         (!x.cor || same_bits(*x.cor, *y.cor)) && same_harmonic && x.expression == y.expression &&
+         same_bits(a.T, b.T) && same_bits(a.grid.h, b.grid.h) && a.grid.steps == b.grid.steps &&
          a.method == b.method && a.output.channels == b.output.channels &&
          a.output.every == b.output.every;
 }
 
 }  // namespace
 
-std::span<const std::string_view> sweep_keys() {
-  return kKeyNames;
+std::vector<std::string> sweep_keys() {
+  return numeric_key_names();
 }
 
 SweepGrid::SweepGrid(const std::string& scene_path, const std::vector<std::string>& overrides,
                      std::vector<SweepAxis> axes)
     : path_(scene_path), overrides_(overrides), axes_(std::move(axes)) {
+  const auto& names = numeric_key_names();
   for (const SweepAxis& axis : axes_) {
-    const auto key = std::find_if(std::begin(kKeys), std::end(kKeys),
-                                  [&](const Key& k) { return k.name == axis.key(); });
-    if (key == std::end(kKeys))
-      throw SceneError("--vary " + axis.key() + ": not a key a sweep can vary (allowed: " +
-                       join({kKeyNames.begin(), kKeyNames.end()}) + ")");
-    if (std::find(keys_.begin(), keys_.end(), &*key) != keys_.end())
-      throw SceneError("--vary " + axis.key() + ": the key is varied twice");
-    keys_.push_back(&*key);
-    grid_varies_ = grid_varies_ || key->name == "time.T" || key->name == "time.h";
+    if (std::find(names.begin(), names.end(), axis.key()) == names.end()) {
+      std::vector<std::string_view> allowed(names.begin(), names.end());
+      throw SceneError("--vary " + axis.key() +
+                       ": not a key a sweep can vary (allowed: " + join(allowed) +
+                       "; method.name and force.expression are not numbers: one sweep per value; "
+                       "the [output] keys do not change a summary)");
+    }
+    for (const SweepAxis& other : axes_)
+      if (&other != &axis && other.key() == axis.key())
+        throw SceneError("--vary " + axis.key() + ": the key is varied twice");
+    grid_varies_ = grid_varies_ || axis.key() == "time.T" || axis.key() == "time.h";
   }
   // Strides for "the last axis varies fastest"; at most 2^53 points, so that a point's index and
   // the count of points done are exact as doubles too.
@@ -218,6 +196,13 @@ SweepGrid::SweepGrid(const std::string& scene_path, const std::vector<std::strin
   } catch (const SceneError& e) {
     throw SceneError(describe(0) + ": " + e.what());
   }
+  // A [method] key of another method than the scene's was refused by the reader above.
+  for (const SweepAxis& axis : axes_) {
+    const KeySpec* spec = numeric_spec(axis.key(), method_name(base_.method));
+    if (!spec)
+      throw std::logic_error("--vary " + axis.key() + ": the reader took a key it has not");
+    keys_.push_back(spec);
+  }
   // The scene reader's checks are of two kinds. Those of one key (a number, finite, in the key's
   // range, an integer where one is needed) ask the same of every value on an axis whatever the
   // other keys are; every range a scene reader checks is an interval, so the smallest and the
@@ -229,7 +214,7 @@ SweepGrid::SweepGrid(const std::string& scene_path, const std::vector<std::strin
   // energy with channel E) are the only others the reader makes; check_cross_keys() repeats them,
   // in the reader's order and with its comparisons, on every point's plain values.
   for (std::size_t k = 0; k < axes_.size(); ++k) {
-    if (keys_[k]->integer)
+    if (keys_[k]->type == KeyType::integer)
       for (std::int64_t j = 1; j < axes_[k].size(); ++j) check_with_reader(j * strides_[k]);
     else
       for (std::int64_t j : {axes_[k].smallest(), axes_[k].largest()})
@@ -247,7 +232,12 @@ std::int64_t SweepGrid::shared_grid_run() const {
 }
 
 void SweepGrid::set_values(std::int64_t i, Scene& scene) const {
-  for (std::size_t k = 0; k < axes_.size(); ++k) keys_[k]->set(scene, axes_[k].value(index(i, k)));
+  for (std::size_t k = 0; k < axes_.size(); ++k) {
+    const double x = axes_[k].value(index(i, k));
+    const KeySpec& spec = *keys_[k];
+    spec.set(scene,
+             spec.type == KeyType::integer ? KeyValue(static_cast<std::int64_t>(x)) : KeyValue(x));
+  }
 }
 
 void SweepGrid::apply(std::int64_t i, Scene& scene) const {

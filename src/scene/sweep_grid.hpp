@@ -16,6 +16,8 @@
 
 namespace impact {
 
+struct KeySpec;
+
 // One --vary: "table.key=SPEC" with SPEC `a:b:n` (n values from a to b, evenly spaced, both ends
 // included), `a:b:n:log` (evenly spaced in log10; a, b > 0) or `v1,v2,...` (the numbers given).
 class SweepAxis {
@@ -42,7 +44,7 @@ class SweepAxis {
 };
 
 // The keys --vary accepts: every number a scene reads (method keys only for their method).
-std::span<const std::string_view> sweep_keys();
+std::vector<std::string> sweep_keys();
 
 class SweepGrid {
  public:
@@ -72,8 +74,6 @@ class SweepGrid {
   // "point 3 of 41 (time.h=0.0001)", for messages.
   std::string describe(std::int64_t i) const;
 
-  struct Key;
-
  private:
   void set_values(std::int64_t i, Scene& scene) const;
   void check_with_reader(std::int64_t i) const;
@@ -82,7 +82,7 @@ class SweepGrid {
   std::string path_;
   std::vector<std::string> overrides_;
   std::vector<SweepAxis> axes_;
-  std::vector<const Key*> keys_;
+  std::vector<const KeySpec*> keys_;  // the scene reader's key of each axis
   std::vector<std::int64_t> strides_;
   std::int64_t size_ = 1;
   bool grid_varies_ = false;

@@ -1,0 +1,127 @@
+// Decimated output of a run (output.every = k): a row at t_0, at every k-th step and at the last
+// step. A row stands for the steps since the previous row: its N is their mean contact force, so
+// that the row's interval times N is the contact impulse delivered in it and the rows keep every
+// impulse at any k (h * sum N^l = v^n - v^0 - int f, (4-9)); its iterations are their sum, so that
+// the rows add up to the run's total. State channels (u, v, E) are those of the row's own step.
+//
+// The step loop sees a RowTap: one comparison per step (and two additions when N or the
+// iterations are written), so that it keeps its state in registers (run.hpp); the rows, and the
+// periodic checks a long run makes (a full disk, progress), are handled out of line by RowStream,
+// at the next step where one of them is due.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+
+#include "impact/model.hpp"
+#include "impact/run.hpp"
+
+namespace impact {
+
+// One written row: the state at t_l = l h and what the steps since the previous row carried.
+struct OutputRow {
+  std::int64_t l = 0;
+  State state;
+  double contact_force = 0.0;   // the mean of N^j over those steps (0 at l = 0)
+  std::int64_t iterations = 0;  // the sum of their iterations
+  double energy = 0.0;          // E at t_l where the output asks for it (run_scene.hpp)
+};
+
+// Which steps get a row: l = 0, every, 2 every, ... and always the last step.
+class RowSchedule {
+ public:
+  RowSchedule(std::int64_t every, std::int64_t last);
+  // The index of the next row (past the last one: last + 1, which no step reaches).
+  std::int64_t next() const { return next_; }
+  // Moves past the row at next().
+  void advance() {
+    next_ = next_ == last_ ? last_ + 1 : (last_ - next_ > every_ ? next_ + every_ : last_);
+  }
+
+ private:
+  std::int64_t every_, last_, next_ = 0;
+};
+
+// The out-of-line part of a run's output: rows by RowSchedule, and a check every `check_every`
+// steps (at check_every, 2 check_every, ...).
+class RowStream {
+ public:
+  using RowSink = std::function<void(const OutputRow&)>;
+  using Check = std::function<void(std::int64_t l)>;
+  RowStream(std::int64_t every, const Grid& grid, RowSink row, std::int64_t check_every = 0,
+            Check check = {});
+
+  // The next step at which at() must be called.
+  std::int64_t next() const { return next_; }
+  // Step l == next() with the state there, the StepInfo of the step that ended there and the sums
+  // of N^j and of the iterations over the steps since the last row (those of step l included);
+  // returns whether a row was written (the sums then start again from 0).
+  bool at(std::int64_t l, const State& s, const StepInfo& info, double force_sum,
+          std::int64_t iteration_sum);
+
+ private:
+  RowSchedule rows_;
+  RowSink row_;
+  Check check_;
+  std::int64_t check_every_, next_check_, last_row_ = 0, next_ = 0;
+};
+
+// The observer a step loop sees (simulate()): kSums adds N^l and the iterations of every step,
+// which the rows need when they carry N or the iterations.
+template <bool kSums>
+class RowTap {
+ public:
+  static constexpr bool kStepsLocally = true;  // simulate() keeps next_ and the sums in registers
+
+  explicit RowTap(RowStream& stream) : stream_(&stream), next_(stream.next()) {}
+
+  void operator()(std::int64_t l, const State& s, const StepInfo& info) {
+    if constexpr (kSums) {
+      force_sum_ += info.contact_force;
+      iteration_sum_ += info.iterations;
+    }
+    if (l == next_) [[unlikely]] {
+      if (due(stream_, l, s, info, force_sum_, iteration_sum_)) {
+        force_sum_ = 0.0;
+        iteration_sum_ = 0;
+      }
+      next_ = stream_->next();
+    }
+  }
+
+ private:
+  // Out of line and on copies, so that nothing on the common path takes the loop state's address.
+  [[gnu::noinline]] static bool due(RowStream* stream, std::int64_t l, State s, StepInfo info,
+                                    double force_sum, std::int64_t iteration_sum) {
+    return stream->at(l, s, info, force_sum, iteration_sum);
+  }
+
+  RowStream* stream_;
+  std::int64_t next_;
+  double force_sum_ = 0.0;
+  std::int64_t iteration_sum_ = 0;
+};
+
+// Runs `stepper` over the grid, streaming its rows to `stream`; `watch`, when given, sees every
+// step first (the errors against a reference, the work of f(t), a time-stepper's events), out of
+// line. `sums`: the rows carry N or the iterations.
+using StepWatch = std::function<void(std::int64_t l, const State& s, const StepInfo& info)>;
+// watch(l, s, info), out of line on copies.
+[[gnu::noinline]] void watch_step(const StepWatch& watch, std::int64_t l, State s, StepInfo info);
+
+template <class Stepper>
+RunSummary simulate_rows(Stepper& stepper, const State& initial, const Grid& grid,
+                         RowStream& stream, bool sums, const StepWatch& watch) {
+  const auto with = [&]<bool kSums>() {
+    RowTap<kSums> tap(stream);
+    if (!watch) return simulate(stepper, initial, grid, tap);
+    return simulate(stepper, initial, grid,
+                    [&](std::int64_t l, const State& s, const StepInfo& info) {
+                      watch_step(watch, l, s, info);
+                      tap(l, s, info);
+                    });
+  };
+  return sums ? with.template operator()<true>() : with.template operator()<false>();
+}
+
+}  // namespace impact

@@ -1,0 +1,42 @@
+// The reference of --against exact and of every error measure (error_norms.hpp) samples the
+// closed form flight by flight; each sample must be ExactSolution::at() bit for bit, through the
+// Zeno accumulation and the rest after it, for every grid.
+#include <bit>
+#include <catch2/catch.hpp>
+#include <cstdint>
+
+#include "impact/error_norms.hpp"
+#include "impact/exact.hpp"
+
+using impact::Model;
+using impact::State;
+
+TEST_CASE("reference sampling: flight by flight is at() bit for bit", "[exact][regression]") {
+  struct Case {
+    Model model;
+    State initial;
+    double T;
+  };
+  const Case cases[] = {
+      {{0.0, -9.80665, 0.75, {}, {}}, {5.0, -1.0}, 10.0},   // Figure 4 with COR: Zeno at 7.0 s
+      {{0.0, -9.80665, {}, {}, {}}, {5.0, -1.0}, 10.0},     // elastic: bounces forever
+      {{0.0, -9.80665, 0.0, {}, {}}, {1.0, 0.0}, 2.0},      // plastic: rests at the impact
+      {{1e6, -9.80665, 0.9, {}, {}}, {1e6 + 1, 3.0}, 8.0},  // a far floor, COR near 1
+      {{0.0, 2.0, 0.5, {}, {}}, {0.5, -3.0}, 3.0},          // an upward force: one impact
+  };
+  for (const Case& c : cases)
+    for (const double h : {1e-3, 3.7e-4, 1e-5}) {
+      INFO("u0 = " << c.initial.u << ", f = " << c.model.f << ", h = " << h);
+      const impact::ExactSolution exact(c.model, c.initial);
+      impact::ReferenceSolution reference(c.model, c.initial);
+      const impact::Grid grid = impact::Grid::covering(c.T, h);
+      std::int64_t first_difference = -1;
+      for (std::int64_t l = 0; l <= grid.steps && first_difference < 0; ++l) {
+        const State a = reference.at(grid.t(l)), b = exact.at(grid.t(l));
+        if (std::bit_cast<std::uint64_t>(a.u) != std::bit_cast<std::uint64_t>(b.u) ||
+            std::bit_cast<std::uint64_t>(a.v) != std::bit_cast<std::uint64_t>(b.v))
+          first_difference = l;
+      }
+      CHECK(first_difference == -1);
+    }
+}
