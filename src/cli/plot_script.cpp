@@ -46,21 +46,25 @@ void data_block(std::ostringstream& gp, const std::string& name, const std::vect
   gp << "EOD\n";
 }
 
-// gnuplot widens the range of a constant curve itself, with a warning; this range says the same
-// without one.
-std::string y_range(const Panel& panel) {
+// gnuplot widens the range of an axis over constant data itself, with a warning (a run of one
+// row, a flat channel, a sweep of one point); these ranges say the same without one.
+std::string ranges(const Panel& panel) {
   bool any = false;
-  double low = 0, high = 0;
+  Point low, high;
   for (const Series& s : panel.series)
     for (const Point& p : s.points) {
       if (!s.autoscale) continue;
-      low = any ? std::min(low, p.y) : p.y;
-      high = any ? std::max(high, p.y) : p.y;
+      low = any ? Point{std::min(low.x, p.x), std::min(low.y, p.y)} : p;
+      high = any ? Point{std::max(high.x, p.x), std::max(high.y, p.y)} : p;
       any = true;
     }
-  if (!any || low != high) return "set autoscale y\n";
-  const double margin = low == 0 ? 1 : std::abs(low) / 100;
-  return "set yrange [" + round_trip(low - margin) + ":" + round_trip(high + margin) + "]\n";
+  const auto range = [&](const char* axis, double lo, double hi) {
+    if (!any || lo != hi) return std::string("set autoscale ") + axis + "\n";
+    const double margin = lo == 0 ? 1 : std::abs(lo) / 100;
+    return std::string("set ") + axis + "range [" + round_trip(lo - margin) + ":" +
+           round_trip(hi + margin) + "]\n";
+  };
+  return range("x", low.x, high.x) + range("y", low.y, high.y);
 }
 
 void plot_panel(std::ostringstream& gp, const Panel& panel, std::size_t index) {
@@ -80,8 +84,7 @@ void plot_panel(std::ostringstream& gp, const Panel& panel, std::size_t index) {
     return;
   }
   gp << (panel.log_x ? "set logscale x\n" : "unset logscale x\n")
-     << (panel.log_y ? "set logscale y\n" : "unset logscale y\n") << y_range(panel) << plots
-     << '\n';
+     << (panel.log_y ? "set logscale y\n" : "unset logscale y\n") << ranges(panel) << plots << '\n';
 }
 
 }  // namespace
