@@ -57,6 +57,11 @@ TEST_CASE("plot: a run's CSV, one panel per channel, as png, svg or pdf", "[cli]
                       Contains("run.gif: --out must end in .png, .pdf or .svg"));
   CHECK_FAILS_CLEANLY(dir, "plot missing.csv", 2,
                       Contains("missing.csv: cannot read the CSV: No such file"));
+  // One row: a point, drawn without gnuplot's warning about an empty range.
+  dir.write("one.csv", "t,u,v\n0,1,2\n");
+  const Result one = dir.run("plot one.csv");
+  CHECK(one.code == 0);
+  CHECK(one.err.empty());
   dir.write("channels.csv", "t,u,w\n0,1,2\n");
   CHECK_FAILS_CLEANLY(dir, "plot channels.csv", 2,
                       Contains("unknown channel 'w'") && Contains("u, v, N, E, iterations"));
