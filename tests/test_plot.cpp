@@ -176,6 +176,12 @@ TEST_CASE("plot: events marked on a run, a reference overlaid, the energy of f(t
   // An events CSV alone: v before and after each event.
   REQUIRE(dir.run("plot ev.csv -o ev.svg").code == 0);
   CHECK_THAT(slurp(dir / "ev.svg"), Contains("impact: 21, stick: 1, lift: 0"));
+  // 20 000 events are drawn through their extremes, and the figure says so.
+  REQUIRE(dir.shell("{ echo t,kind,v_before,v_after; seq 20000 | sed 's/$/,impact,-1,0.5/'; } "
+                    "> many.csv && \"$IMPACT\" plot many.csv -o many.svg")
+              .code == 0);
+  CHECK_THAT(slurp(dir / "many.svg"),
+             Contains("impact: 20000") && Contains("each curve of more than 8192 points"));
   // E is not v^2/2 - f u when f depends on t: the figure says what it is.
   REQUIRE(dir.run("run " + quote(kFigure4) +
                   " --unset force.f --set 'force.expression=\"-9.8*(1+t/10)\"' -q -o forced.csv")

@@ -52,6 +52,10 @@ const Text kEnergyNote{
     "E = v^2/2 - f u (3-1); with a force f(t), v^2/2 - f(0) u(0) - W(t), W the work of f "
     "(README, 'Time-dependent force')"};
 
+const Text kThinnedNote{
+    "each curve of more than 8192 points drawn through the first, lowest, highest and last of "
+    "every group of consecutive points"};
+
 Text thinned_note(std::int64_t rows, const Curve& curve) {
   return {std::to_string(rows) + " rows, each curve drawn through the first, lowest, highest and " +
           "last value of every " + std::to_string(curve.per_bucket()) + " rows"};
@@ -149,6 +153,11 @@ Figure events_figure(const EventsData& events) {
     }
   }
   figure.title.push_back({counts});
+  for (std::size_t k = 0; k < 3; ++k)
+    if (events.before[k].thinned()) {
+      figure.title.push_back(kThinnedNote);
+      break;
+    }
   figure.panels.push_back(std::move(panel));
   return figure;
 }
@@ -174,10 +183,7 @@ Figure sweep_figure(const SweepData& sweep) {
       thinned = thinned || c.thinned();
     }
   x_positive = any && x_low > 0;
-  if (thinned)
-    figure.title.push_back(
-        {"each curve drawn through the first, lowest, highest and last of "
-         "every few consecutive points"});
+  if (thinned) figure.title.push_back(kThinnedNote);
   if (std::count(sweep.quantities.begin(), sweep.quantities.end(), "E_T"))
     figure.title.push_back(kEnergyNote);
   for (std::size_t q = 0; q < sweep.quantities.size(); ++q) {
