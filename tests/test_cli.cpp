@@ -391,21 +391,6 @@ TEST_CASE("cli: run --against exact prints the errors measure_errors gives for t
   CHECK(dir.run("run " + scene + " --against direct -o Z.csv").code == 2);
 }
 
-TEST_CASE("cli: plot draws a run's CSV with gnuplot, one panel per channel", "[cli]") {
-  TempDir dir;
-  const std::string scene = std::string(IMPACT_SOURCE_DIR) + "/experiments/figure4/cor075.toml";
-  REQUIRE(dir.run("run " + scene + " -q -o run.csv").code == 0);
-  REQUIRE(dir.run("plot run.csv").code == 0);
-  CHECK(slurp(dir / "run.png").substr(1, 3) == "PNG");
-  REQUIRE(dir.run("plot run.csv --out run.svg").code == 0);
-  CHECK_THAT(slurp(dir / "run.svg"), Contains("<svg"));
-  // Not a CSV of impact run, an unknown figure format, a missing file: exit 2.
-  dir.write("other.csv", "x,y\n1,2\n");
-  CHECK(dir.run("plot other.csv").code == 2);
-  CHECK(dir.run("plot run.csv --out run.gif").code == 2);
-  CHECK(dir.run("plot missing.csv").code == 2);
-}
-
 TEST_CASE("cli: a run of more than 1e8 rows asks for output.every or --force before it starts",
           "[cli]") {
   TempDir dir;

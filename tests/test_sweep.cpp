@@ -469,7 +469,15 @@ TEST_CASE("sweep: merging parts that do not belong together is rejected", "[swee
       {"cut.csv p2.csv", "cut short"},
       {"short.csv p2.csv", "incomplete"},
       {"long.csv p2.csv", "more rows"},
-      {"p1.csv missing.csv", "cannot open"},
+      {"p1.csv missing.csv", "missing.csv: cannot open the part: No such file or directory"},
+      // An option right after --merge is taken for a part: say so.
+      {"-o M.csv p1.csv p2.csv",
+       "-o: cannot open the part: No such file or directory (this looks "
+       "like an option: give the parts right after --merge"},
+      {"-q p1.csv p2.csv", "-q: cannot open the part: No such file or directory (this looks"},
+      {"p1.csv,p2.csv",
+       "p1.csv,p2.csv: cannot open the part: No such file or directory (parts "
+       "are separated by spaces, not commas)"},
   };
   for (const auto& [parts, message] : cases) {
     INFO(parts);

@@ -31,18 +31,19 @@ do for [format in "png svg"] {
   set xtics 0.0005 format "%.4f"
   set xlabel "t [s]"
 
+  # u in mm, so that the tics read -1.2 rather than -1.2x10^{-3} (and 0 rather than 0.0x10^0).
+  # The key sits above the dip and the note below the printed S_2, where no curve runs.
   set title "(a) displacement: S_1, S_2"
-  set key bottom left box opaque
+  set key top center box opaque
   printed_jump = -1.5 * eps + 1.5 * eps**2  # S_2(t* + eps) - S_4(t* + eps) with S_2 as printed
-  set label 1 sprintf("printed S_2(t_*+{/Symbol e}) - S_4(t_*+{/Symbol e}) = %.5g m", printed_jump) \
-      at t_star + 0.98 * eps, -1.5e-3 right
-  set ylabel "u(t) [m]"
-  set yrange [-1.6e-3 : 0.2e-3]
-  set format y "%.1t{/Symbol \264}10^{%T}"
-  plot pieces skip 1 using 1:(piece(1, 3)) with lines lw 2 lc rgb "#0072B2" title "S_1", \
-       '' skip 1 using 1:(piece(2, 3)) with lines lw 2 lc rgb "#D55E00" title "S_2 (corrected)", \
-       printed skip 1 using 1:2 with lines lw 1.5 dt 2 lc rgb "#808080" title "S_2 as printed", \
-       pieces skip 1 every 20 using 1:(cubic(6)) with points pt 6 ps 0.8 lc rgb "black" \
+  set label 1 sprintf("S_2 as printed ends at S_2(t_*+{/Symbol e}) - S_4(t_*+{/Symbol e}) = %.5g mm", \
+      1e3 * printed_jump) at t_star + 0.98 * eps, -1.72 right
+  set ylabel "u(t) [mm]"
+  set yrange [-1.8 : 0.2]
+  plot pieces skip 1 using 1:(1e3 * piece(1, 3)) with lines lw 2 lc rgb "#0072B2" title "S_1", \
+       '' skip 1 using 1:(1e3 * piece(2, 3)) with lines lw 2 lc rgb "#D55E00" title "S_2 (corrected)", \
+       printed skip 1 using 1:(1e3 * $2) with lines lw 1.5 dt 2 lc rgb "#808080" title "S_2 as printed", \
+       pieces skip 1 every 20 using 1:(1e3 * cubic(6)) with points pt 6 ps 0.8 lc rgb "black" \
          title "GSL natural spline"
 
   unset label 1
@@ -50,7 +51,6 @@ do for [format in "png svg"] {
   set title "(b) velocity: S_1', S_2'"
   set ylabel "v(t) [m/s]"
   set yrange [-1.7 : 1.7]
-  set format y "%g"
   plot pieces skip 1 using 1:(piece(1, 4)) with lines lw 2 lc rgb "#0072B2" title "S_1'", \
        '' skip 1 using 1:(piece(2, 4)) with lines lw 2 lc rgb "#D55E00" title "S_2'", \
        '' skip 1 every 20 using 1:(cubic(7)) with points pt 6 ps 0.8 lc rgb "black" \
@@ -79,7 +79,8 @@ do for [format in "png svg"] {
        '' skip 1 every 50 using 1:9 with points pt 6 ps 0.8 lc rgb "black" \
          title "GSL natural spline (5 knots)"
 
-  set key bottom right box opaque
+  # The key in the upper left, where v = -1.5 runs below it, clear of the jump at t = 5.
+  set key top left box opaque samplen 2 width -3
   set title "(e) velocity: S_3', S_1', S_2', S_4'"
   set ylabel "v(t) [m/s]"
   set yrange [-2 : 2]
@@ -90,7 +91,7 @@ do for [format in "png svg"] {
        '' skip 1 every 50 using 1:10 with points pt 6 ps 0.8 lc rgb "black" \
          title "GSL natural spline (5 knots)"
 
-  set key top left box opaque
+  set key top left box opaque samplen 4
   set title "(f) contact force: N = S''"
   set ylabel "N(t) [m/s^2]"
   set yrange [-100 : 3400]

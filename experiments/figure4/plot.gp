@@ -47,13 +47,23 @@ do for [format in "png pdf"] {
     set title sprintf("%s: displacement\nrest at %.3f s (direct), %.3f s (fb\\_newton); %s", \
                       label, rest_d, rest_f, exact_rest)
     set ylabel "u(t) [m]"
-    set yrange [-0.3:7]
+    set yrange [-0.3:7.5]
+    # Dotted: where direct rests; without COR, dashed: the paper's rest "at around t = 7.5".
     set arrow 1 from rest_d, graph 0 to rest_d, graph 1 nohead dt 3 lc rgb blue
+    if (scene eq "no_cor") {
+      set arrow 2 from 7.5, graph 0 to 7.5, graph 1 nohead dt 2 lw 1.5 lc rgb "black"
+    }
+    set key maxrows 3
     plot csv(scene, 'direct') skip 1 using 1:2 with lines lw 3 lc rgb blue title "direct", \
          csv(scene, 'fb_newton') skip 1 using 1:2 with lines lw 2 dt 2 lc rgb orange \
            title "fb_newton", \
-         csv(scene, 'exact') skip 1 using 1:2 with lines lw 1 lc rgb "black" title "exact"
+         csv(scene, 'exact') skip 1 using 1:2 with lines lw 1 lc rgb "black" title "exact", \
+         NaN with lines dt 3 lc rgb blue title "direct rests", \
+         NaN with lines dt 2 lw 1.5 lc rgb "black" \
+           title (scene eq "no_cor" ? "paper: rests around 7.5 s" : "")
+    set key maxrows auto
     unset arrow 1
+    unset arrow 2
 
     set title sprintf("%s: velocity, max|direct - fb\\_newton| = %.2g m/s", label, \
                       value('diff_'.scene.'_v'))
@@ -212,10 +222,12 @@ do for [format in "png svg"] {
   set output
 }
 
-# The readings figure. Histogram of rest times in 0.1 s bins (a member still bouncing at T has no
-# rest time and is counted in the title).
+# The readings figure. Histogram of rest times in 0.1 s bins, the two arithmetics side by side in
+# each bin. A member still bouncing at T has no rest time: it is counted in the title and binned
+# at -1, off the axis (an undefined value would cut the data in two, and smooth frequency would
+# then count each part on its own: two boxes in one bin).
 bin(t) = 0.1 * floor(t / 0.1) + 0.05
-rest_or_nan(name) = (column(name) == column(name)) ? bin(column(name)) : NaN
+rest_bin(name) = (column(name) == column(name)) ? bin(column(name)) : -1
 set datafile missing "nan"
 
 do for [format in "png svg"] {
@@ -259,12 +271,12 @@ do for [format in "png svg"] {
   set xlabel "rest time [s] (0.1 s bins)"
   set ylabel "runs"
   set yrange [0:*]
-  set style fill transparent solid 0.5 noborder
-  set boxwidth 0.1
+  set style fill solid 0.8 noborder
+  set boxwidth 0.045 absolute
   set arrow 3 from 7.5, graph 0 to 7.5, graph 1 nohead dt 2 lw 2 lc rgb "black"
-  plot ensemble using (rest_or_nan("no_cor_direct")):(1) smooth frequency with boxes \
+  plot ensemble using (rest_bin("no_cor_direct") - 0.025):(1) smooth frequency with boxes \
          lc rgb blue title "closed form", \
-       ensemble using (rest_or_nan("no_cor_direct_paper")):(1) smooth frequency with boxes \
+       ensemble using (rest_bin("no_cor_direct_paper") + 0.025):(1) smooth frequency with boxes \
          lc rgb orange title "as printed", \
        NaN with lines dt 2 lw 2 lc rgb "black" title "paper: 'around t = 7.5'"
   unset arrow 3

@@ -39,12 +39,15 @@ do for [format in "png svg"] {
          lc rgb word(colors, k) title "h = ".word(hs, k)." s", \
        1 with lines lc rgb "black" lw 1.5 dt 2 title "bound"
 
+  # The colour is h, the marker the bound: both keyed (the open markers used to be unkeyed).
   set ylabel "max_l |u^l| / bound"
   set title "(b) displacement: filled |u^0| + (T/2) V (printed), open |u^0| + T V (corrected)"
   plot for [k=1:4] file using 1:(pick($2, k, at_least($16))) with points pt 7 ps 0.8 \
-         lc rgb word(colors, k) title "h = ".word(hs, k)." s, printed", \
+         lc rgb word(colors, k) title "h = ".word(hs, k)." s", \
        for [k=1:4] file using 1:(pick($2, k, at_least($17))) with points pt 6 ps 1.2 \
          lc rgb word(colors, k) notitle, \
+       NaN with points pt 7 ps 0.8 lc rgb "black" title "printed: |u^0| + (T/2) V", \
+       NaN with points pt 6 ps 1.2 lc rgb "black" title "corrected: |u^0| + T V", \
        1 with lines lc rgb "black" lw 1.5 dt 2 title "bound"
 
   set ylabel "h sum_l N^l / (V - v^0)"
@@ -75,6 +78,9 @@ stats forcing using 1 nooutput
 runs = STATS_max
 readings = "sup mean rms sup_f0 mean_f0 rms_f0 constant frozen"
 spread(k) = k + 0.7 * ($1 / runs - 0.5)
+# Two readings side by side in one column: the left and the right half.
+spread_left(k) = k - 0.19 + 0.33 * ($1 / runs - 0.5)
+spread_right(k) = k + 0.19 + 0.33 * ($1 / runs - 0.5)
 is_direct(y) = strcol(2) eq "direct" ? y : NaN
 is_newton(y) = strcol(2) eq "fb_newton" ? y : NaN
 # PNG only: a vector copy of its 1536 runs x 9 readings of points is an SVG of 4.7 MB (a PDF of
@@ -86,7 +92,8 @@ set output 'figures/lemma3_forcing.png'
   unset arrow
   set logscale y 10
   set format y "10^{%L}"
-  set key top left box opaque
+  # The keys of (a) and (b) at the bottom right, below every ratio (the top is full of them).
+  set key bottom right box opaque
   set xrange [0.4:9.6]
   set xtics rotate by 30 right ("sup" 1, "mean" 2, "rms" 3, "sup, f(0)" 4, "mean, f(0)" 5, \
              "rms, f(0)" 6, "constant f" 7, "frozen f(t_l)" 8, "proof P" 9)
@@ -103,15 +110,19 @@ set output 'figures/lemma3_forcing.png'
        forcing using (spread(9)):(is_newton($39)) with points pt 6 ps 0.4 lc rgb "#d95f02" notitle, \
        1 with lines lc rgb "black" lw 1.5 dt 2 title "bound"
 
+  # The printed and the corrected bound side by side in each column (the open markers used to
+  # cover the filled ones), and the proof's bound with a marker and a key entry of its own.
   set ylabel "max_l |u^l| / bound"
   set title "(b) displacement: filled |u^0| + (T/2) V (printed), open |u^0| + T V; proof: |u^0| + T P"
-  plot for [k=1:8] forcing using (spread(k)):(column(13 + 3 * k)) with points pt 7 ps 0.3 \
-         lc rgb "#7570b3" title (k == 1 ? "|u^0| + (T/2) V" : ""), \
-       for [k=1:8] forcing using (spread(k)):(column(14 + 3 * k)) with points pt 6 ps 0.4 \
-         lc rgb "#e7298a" title (k == 1 ? "|u^0| + T V" : ""), \
-       forcing using (spread(9)):40 with points pt 6 ps 0.4 lc rgb "#e7298a" notitle, \
+  plot for [k=1:8] forcing using (spread_left(k)):(column(13 + 3 * k)) with points pt 7 ps 0.3 \
+         lc rgb "#7570b3" title (k == 1 ? "printed: |u^0| + (T/2) V" : ""), \
+       for [k=1:8] forcing using (spread_right(k)):(column(14 + 3 * k)) with points pt 6 ps 0.4 \
+         lc rgb "#e7298a" title (k == 1 ? "corrected: |u^0| + T V" : ""), \
+       forcing using (spread(9)):40 with points pt 4 ps 0.4 lc rgb "#66a61e" \
+         title "proof: |u^0| + T P", \
        1 with lines lc rgb "black" lw 1.5 dt 2 title "bound"
 
+  set key top left
   set xrange [0.05:50]
   set logscale x 10
   set format x "10^{%L}"
@@ -129,6 +140,7 @@ set output 'figures/lemma3_forcing.png'
   set yrange [1e-3:1e3]
   set xlabel "omega (rad/s)"
   set ylabel "max_l |v^l| / bound"
+  set key top right
   set title "(d) velocity under three readings of |f| against omega, every run"
   plot forcing using ($5 * (1 + 0.3 * ($1 / runs - 0.5))):($15) with points pt 7 ps 0.3 \
          lc rgb "#1b9e77" title "sup |f|", \

@@ -29,11 +29,14 @@ do for [format in "png svg"] {
   set logscale xy
   set format x "10^{%T}"
   set format y "10^{%T}"
-  set xlabel "time step h [s]" offset 0,0.4
+  set xlabel "time step h [s]"
   set ylabel "max_l |u_a(t_l) - u_b(t_l)| [m]"
   set xrange [5e-7 : 3e-2]
   set yrange [1e-16 : 10]
-  set key below box font ",9" maxrows 4 width -4
+  # The key under the x label, in a bottom margin of its own: gnuplot's `set key below` drew it
+  # over the label here.
+  set bmargin 13
+  set key at graph 0.5, graph -0.26 center top box font ",9"
   paths(name) = results.'/paths_'.name.'.csv'
   plot paths('f0') skip 1 using 1:3 with linespoints pt 5 ps 0.7 lc rgb c3 \
          title "direct - exact, f = 0, t* = 5 on the grid", \
@@ -52,7 +55,7 @@ do for [format in "png svg"] {
        x with lines dt 2 lc rgb "black" title "h"
 
   set title "(b) COR = 1: exact solutions with perturbed initial data"
-  set xlabel offset 0,0
+  set bmargin
   set xlabel "perturbation {/Symbol d} of u^0 [m] or of v^0 [m/s]"
   set ylabel "sup_{[0, 10]} |u_{/Symbol d} - u| [m]"
   set xrange [5e-9 : 0.2]

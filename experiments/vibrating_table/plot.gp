@@ -17,7 +17,7 @@ thresholds = results.'/thresholds.csv'
 trajectories = results.'/trajectories.csv'
 regimes = results.'/regimes.csv'
 
-blue = "#0072B2"; orange = "#E69F00"; green = "#009E73"; red = "#D55E00"; purple = "#CC79A7"
+blue = "#0072B2"; orange = "#E69F00"; green = "#009E73"; red = "#D55E00"; pink = "#CC79A7"
 gray = "#999999"
 
 # The closed forms: Gamma_1 = pi n (1 - e)/(1 + e), Gamma_pd = sqrt(Gamma_1^2 + (2 (1 + e^2)/(1 + e)^2)^2),
@@ -31,7 +31,8 @@ is(col, text) = strcol(col) eq text
 pick(method, e, sweep, kind) = (is(1, method) && abs($3 - e) < 1e-9 && is(4, sweep) && is(6, kind)) ? $5 : NaN
 pick_h(method, h, e, kind) = (is(1, method) && abs($2 / h - 1) < 1e-9 && abs($3 - e) < 1e-9 && is(6, kind)) ? $5 : NaN
 
-thresholds_marks(e) = sprintf("set arrow 1 from %g, graph 0 to %g, graph 1 nohead lw 1.5 dt 2 lc rgb 'black'; set arrow 2 from %g, graph 0 to %g, graph 1 nohead lw 1.5 dt 3 lc rgb 'black'; set arrow 3 from %g, graph 0 to %g, graph 1 nohead lw 1 dt 2 lc rgb '%s'; set arrow 4 from %g, graph 0 to %g, graph 1 nohead lw 1 dt 3 lc rgb '%s'; set arrow 5 from 1, graph 0 to 1, graph 1 nohead lw 1 lc rgb '%s'", g1(e, 1), g1(e, 1), gpd(e, 1), gpd(e, 1), g1(e, 2), g1(e, 2), purple, gpd(e, 2), gpd(e, 2), purple, gray)
+# Every threshold as a vertical line (arrows, which a key does not list: the plots add NaN entries).
+thresholds_marks(e) = sprintf("set arrow 1 from %g, graph 0 to %g, graph 1 nohead lw 1.5 dt 2 lc rgb 'black'; set arrow 2 from %g, graph 0 to %g, graph 1 nohead lw 1.5 dt 3 lc rgb 'black'; set arrow 3 from %g, graph 0 to %g, graph 1 nohead lw 1 dt 2 lc rgb '%s'; set arrow 4 from %g, graph 0 to %g, graph 1 nohead lw 1 dt 3 lc rgb '%s'; set arrow 5 from 1, graph 0 to 1, graph 1 nohead lw 1 lc rgb '%s'", g1(e, 1), g1(e, 1), gpd(e, 1), gpd(e, 1), g1(e, 2), g1(e, 2), pink, gpd(e, 2), gpd(e, 2), pink, gray)
 
 set style textbox opaque noborder
 do for [format in "png pdf"] {
@@ -57,7 +58,7 @@ do for [format in "png pdf"] {
     # Runs of exact that stopped with a numerical failure (regimes.csv), marked at the bottom.
     stats regimes skip 1 using (is(1, "exact") && abs($3 - ee) < 1e-9 && is(6, "failed") ? 1 : 0) nooutput
     failed = STATS_sum
-    set title sprintf("e = %s: {/Symbol G}_1 = %.4f, {/Symbol G}_{pd} = %.4f (n = 1, black dashed / dotted); n = 2 purple; {/Symbol G} = 1 gray: a resting ball lifts off above it", e, g1(ee, 1), gpd(ee, 1))
+    set title sprintf("e = %s: {/Symbol G}_1 = %.4f, {/Symbol G}_{pd} = %.4f (n = 1)", e, g1(ee, 1), gpd(ee, 1))
     plot diagram skip 1 using (pick("exact", ee, "up", "impact")):7 with points pt 7 ps 0.12 lc rgb orange title "impacts, sweep up from rest", \
          diagram skip 1 using (pick("exact", ee, "down", "impact")):7 with points pt 7 ps 0.12 lc rgb blue title "impacts, sweep down", \
          diagram skip 1 using (pick("exact", ee, "up", "lift")):7 with points pt 1 ps 0.5 lc rgb red title "lift-off after a rest (sticking), up", \
@@ -65,7 +66,11 @@ do for [format in "png pdf"] {
          stable(ee, x) + 0.12 with lines lw 1 lc rgb "black" title "period 1, stable (closed form), drawn 0.12 rad above", \
          unstable(ee, x) with lines lw 1 dt 2 lc rgb "black" title "period 1 past {/Symbol G}_{pd} (unstable)", \
          saddle(ee, x) with lines lw 1 dt 4 lc rgb gray title "period 1, saddle branch", \
-         regimes skip 1 using (is(1, "exact") && abs($3 - ee) < 1e-9 && is(6, "failed") ? $5 : NaN):(0.08) with points pt 2 ps 0.8 lc rgb "black" title (failed > 0 ? "run stopped: exact failed numerically" : "")
+         regimes skip 1 using (is(1, "exact") && abs($3 - ee) < 1e-9 && is(6, "failed") ? $5 : NaN):(0.08) with points pt 2 ps 0.8 lc rgb "black" title (failed > 0 ? "run stopped: exact failed numerically" : ""), \
+         NaN with lines lw 1.5 dt 2 lc rgb "black" title "{/Symbol G}_1, n = 1: period 1 appears", \
+         NaN with lines lw 1.5 dt 3 lc rgb "black" title "{/Symbol G}_{pd}, n = 1: period doubling", \
+         NaN with lines lw 1 dt 2 lc rgb pink title "n = 2: {/Symbol G}_1 dashed, {/Symbol G}_{pd} dotted", \
+         NaN with lines lw 1 lc rgb gray title "{/Symbol G} = 1: a resting ball lifts off above it"
   }
   unset multiplot
   unset arrow
@@ -77,7 +82,8 @@ do for [format in "png pdf"] {
     set terminal pdfcairo size 8.7in,6.7in font ",7"
     set output 'figures/vibrating_table_steppers.pdf'
   }
-  set multiplot layout 2,2 title "Time-steppers on the vibrating table: impact phases of both sweeps (impacts as impact run --events dates them: where the step's flight crosses the table) over the exact ones"
+  # The thresholds are named in the title: four more key entries would cover the branches.
+  set multiplot layout 2,2 title "Time-steppers on the vibrating table: impact phases of both sweeps (impacts as impact run --events dates them: where the step's flight crosses the table) over the exact ones\nvertical lines: {/Symbol G}_1 dashed and {/Symbol G}_{pd} dotted (black n = 1, pink n = 2), {/Symbol G} = 1 gray, as in vibrating\\_table.png"
   set key inside left top box opaque font ",8"
   do for [e in "0.5 0.8"] {
     ee = e + 0

@@ -31,6 +31,9 @@ col(c) = c eq "direct" ? "#0072B2" : c eq "fb_newton" ? "#56B4E9" : c eq "moreau
          c eq "event_driven" ? "#E69F00" : \
          strstrt(c, "rk8pd") ? "#CC79A7" : "#D55E00"
 dash(c) = c eq "fb_newton" ? 2 : c eq "siconos" ? 3 : is_tol(c) ? 4 : 1
+# Siconos's Moreau-Jean is moreau_jean's scheme: against h its points lie on moreau_jean's (errors
+# equal to 1e-11), so its squares are drawn larger, around them.
+psize(c) = c eq "siconos" ? 1.4 : 0.8
 point(c) = c eq "direct" ? 7 : c eq "fb_newton" ? 6 : c eq "moreau_jean" ? 5 : c eq "siconos" ? 4 : \
            c eq "siconos_lsodar" ? 9 : c eq "event_driven" ? 13 : strstrt(c, "1e4") ? 8 : strstrt(c, "1e6") ? 10 : 12
 tit(c) = c eq "direct" ? "direct (5-1)" : c eq "fb_newton" ? "fb\\_newton (5-3)" : \
@@ -76,7 +79,7 @@ y_range = "lo = 1e300; hi = 0; zeros = 0; unset logscale; set autoscale xy; \
 # Draws a panel: the curves as lines and points; penalty against CPU time as points alone.
 plot_curves = "plot for [c in value('curves_'.scene)] file(scene, c) skip 1 \
     using (mode == 1 && is_tol(c) ? NaN : xvalue(c)):(yvalue(c, column(mc))) with linespoints \
-    lc rgb col(c) dt dash(c) pt point(c) ps 0.8 lw 1.5 notitle, \
+    lc rgb col(c) dt dash(c) pt point(c) ps psize(c) lw 1.5 notitle, \
   for [c in value('curves_'.scene)] file(scene, c) skip 1 \
     using (mode == 1 && is_tol(c) ? xvalue(c) : NaN):(yvalue(c, column(mc))) with points \
     lc rgb col(c) pt point(c) ps 1.2 notitle"
@@ -85,12 +88,13 @@ plot_curves = "plot for [c in value('curves_'.scene)] file(scene, c) skip 1 \
 panel_at = "pw = (gx1 - gx0 - (ncol - 1) * gapx) / ncol; ph = (gy1 - gy0 - (nrow - 1) * gapy) / nrow; \
   set lmargin at screen gx0 + (col - 1) * (pw + gapx); set rmargin at screen gx0 + (col - 1) * (pw + gapx) + pw; \
   set tmargin at screen gy1 - (row - 1) * (ph + gapy); set bmargin at screen gy1 - (row - 1) * (ph + gapy) - ph"
-# The key of the curves key_curves, titled key_title, in the strip right of the panels.
+# The key of the curves key_curves, titled key_title, in the strip right of the panels, in the
+# font key_font.
 key_strip = "set lmargin at screen gx1 + 0.005; set rmargin at screen 0.995; set tmargin at screen gy1; \
   set bmargin at screen gy0; unset title; unset border; unset tics; unset xlabel; unset ylabel; \
   unset logscale; unset grid; set xrange [0:1]; set yrange [0:1]; \
-  set key center center nobox noopaque Left reverse enhanced spacing 1.3 title key_title; \
-  plot for [c in key_curves] NaN with linespoints lc rgb col(c) dt dash(c) pt point(c) ps 0.8 lw 1.5 title tit(c); \
+  set key center center nobox noopaque Left reverse enhanced spacing 1.3 font key_font title key_title; \
+  plot for [c in key_curves] NaN with linespoints lc rgb col(c) dt dash(c) pt point(c) ps psize(c) lw 1.5 title tit(c); \
   set border; set tics; set grid; unset key"
 
 # Every curve of the constant-force scenes, in the order of the first scene that has it.
@@ -105,6 +109,7 @@ penalty_note = "method\n(penalty: on the grid h = 10^{-3} s;\nagainst CPU time o
 tolerance_note = "method\n(penalty, event\\_driven, LSODAR:\non the grid h = 10^{-3} s;\nagainst CPU time one point,\nat the tightest tolerance 10^{-11})\n"
 zero_note = "an error below 10^{-16} (exact, or rounding) is drawn on the bottom axis, at < 10^{-16}"
 
+key_font = ",10"
 set style data linespoints
 set format x "10^{%L}"
 set format y "10^{%L}"
@@ -138,7 +143,7 @@ do for [format in "png svg"] {
   # (f) why direct stalls without COR: the energy it loses at an off-grid impact.
   row = 2; col = 3
   @panel_at
-  set title "(f) direct, no COR, off-grid: the energy lost does not fall with h"
+  set title "(f) direct, no COR, off-grid:\nthe energy lost does not fall with h"
   set xlabel "step h [s]"
   set ylabel "|E^n - E(T)| [m^2/s^2]"
   unset logscale y
@@ -220,23 +225,25 @@ do for [format in "png svg"] {
                   strstrt(value('curves_'.scene), "siconos_lsodar") > 0 || \
                   strstrt(value('curves_'.scene), "event_driven") > 0
     nrow = has_penalty ? 3 : 2; ncol = 4
+    # Sixteen panels and a key on one page: a font that stays legible when the page is shown at a
+    # README's width (it was 10 on 2000 pixels).
     if (format eq "png") {
-      set terminal pngcairo size 2000, (has_penalty ? 1300 : 900) font ",10"
+      set terminal pngcairo size 2000, (has_penalty ? 1400 : 1000) font ",13"
       set output out.'/work_precision_'.scene.'.png'
     } else {
-      set terminal svg size 2000, (has_penalty ? 1300 : 900) font ",10" dynamic
+      set terminal svg size 2000, (has_penalty ? 1400 : 1000) font ",13" dynamic
       set output out.'/work_precision_'.scene.'.svg'
     }
     horizon = strstrt(value('title_'.scene), "T = ") ? "" : " (T = 10 s)"
     set multiplot title "Work against precision, ".value('title_'.scene).horizon."\n".zero_note
-    gx0 = 0.05; gx1 = 0.84; gy0 = has_penalty ? 0.05 : 0.08; gy1 = has_penalty ? 0.9 : 0.86
-    gapx = 0.05; gapy = has_penalty ? 0.08 : 0.12
+    gx0 = 0.06; gx1 = 0.77; gy0 = has_penalty ? 0.06 : 0.09; gy1 = has_penalty ? 0.89 : 0.85
+    gapx = 0.065; gapy = has_penalty ? 0.1 : 0.14; key_font = ",13"
     set logscale xy
     set grid
     panel = 0
     do for [mode = 1:nrow] {
       set xlabel mode == 1 ? "CPU time of the solve [s]" : mode == 2 ? "step h [s]" : \
-          "tolerance rtol = atol (penalty, event\\_driven, LSODAR)"
+          "tolerance rtol = atol"
       # The tolerances span 8 decades: a label every second one.
       if (mode == 3) { set xtics 100 } else { set xtics autofreq }
       against = mode == 1 ? "CPU time" : mode == 2 ? "the step h" : "the tolerance"

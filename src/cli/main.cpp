@@ -99,13 +99,8 @@ int main(int argc, char** argv) {
           impact::cli::kHelpWidth) +
       "\n\n" + impact::scene_help(impact::cli::kHelpWidth) + "\n" + epilogue);
 
-  CLI::App* plot_cmd = app.add_subcommand(
-      "plot",
-      "Draw the CSV of a run (impact run ... -o run.csv) with gnuplot: one panel per channel.");
-  std::string plot_csv, plot_out;
-  plot_cmd->add_option("CSV", plot_csv, "A CSV written by impact run")->required();
-  plot_cmd->add_option("--out,-o", plot_out,
-                       "The figure: .png, .pdf or .svg (default: the CSV's name with .png)");
+  impact::cli::PlotOptions plot;
+  CLI::App* plot_cmd = impact::cli::add_plot_command(app, plot);
 
   impact::cli::SweepOptions sweep;
   CLI::App* sweep_cmd = impact::cli::add_sweep_command(app, sweep);
@@ -123,14 +118,7 @@ int main(int argc, char** argv) {
     return kBadInput;
   }
 
-  if (plot_cmd->parsed()) {
-    if (plot_out.empty())
-      plot_out =
-          plot_csv.substr(0, plot_csv.rfind(".csv") == std::string::npos ? plot_csv.size()
-                                                                         : plot_csv.rfind(".csv")) +
-          ".png";
-    return impact::cli::plot_command(plot_csv, plot_out);
-  }
+  if (plot_cmd->parsed()) return impact::cli::plot_command(plot);
   bool in_place = true;
   try {
     if (sweep_cmd->parsed()) return impact::cli::run_sweep(sweep);

@@ -1,97 +1,206 @@
 #include "cli/plot.hpp"
 
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <csignal>
 #include <cstdio>
-#include <fstream>
-#include <map>
-#include <sstream>
-#include <stdexcept>
+#include <cstring>
+#include <optional>
 #include <vector>
+
+#include "cli/help_format.hpp"
+#include "cli/plot_data.hpp"
+#include "cli/plot_figure.hpp"
+#include "cli/sweep_csv.hpp"
+#include "impact/output.hpp"
+#include "scene/toml_text.hpp"
+
+extern char** environ;
 
 namespace impact::cli {
 namespace {
 
-struct Panel {
-  const char* ylabel;
-  const char* style;  // N is an impulse per step (the row at t_l carries N^{l-1}): drawn as such
+constexpr int kFailure = 1, kBadInput = 2;
+
+// gnuplot could not start, failed, or drew nothing (exit code 1).
+class GnuplotError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
 };
 
-const std::map<std::string, Panel> kPanels = {
-    {"u", {"u(t) [m]", "lines lw 1.5"}},
-    {"v", {"v(t) [m/s]", "lines lw 1.5"}},
-    {"N", {"N(t) [m/s^2]", "impulses lw 1.5"}},
-    {"E", {"E(t) = v^2/2 - f u [J/kg]", "lines lw 1.5"}},
-    {"iterations", {"iterations per step", "impulses"}},
-};
+std::string default_out(const std::string& csv) {
+  const auto dot = csv.rfind(".csv");
+  return csv.substr(0, dot == std::string::npos ? csv.size() : dot) + ".png";
+}
 
-std::string quoted(const std::string& text) {
-  std::string out = "'";
-  for (char c : text) out += c == '\'' ? std::string("''") : std::string(1, c);
-  return out + "'";
+std::string figure_format(const std::string& out) {
+  const auto dot = out.rfind('.');
+  const std::string ext = dot == std::string::npos ? "" : out.substr(dot + 1);
+  if (ext != "png" && ext != "pdf" && ext != "svg")
+    throw PlotInputError(printable(out) + ": --out must end in .png, .pdf or .svg");
+  return ext;
+}
+
+// The header, after a sweep part's first line ('# impact sweep part K/N ...') if there is one.
+std::string read_header(CsvLines& lines) {
+  std::string header;
+  if (!lines.next(header)) lines.reject("the file is empty: no CSV header");
+  if (parse_part_line(header) && !lines.next(header))
+    lines.reject("no CSV header after the part's first line");
+  return header;
+}
+
+Figure read_figure(const PlotOptions& o) {
+  CsvLines lines(o.csv);
+  const std::string header = read_header(lines);
+  const bool extras = !o.against.empty() || !o.events.empty();
+  if (extras && (is_sweep_header(header) || is_events_header(header)))
+    throw PlotInputError(printable(o.csv) + ": --against and --events go with the CSV of a run, " +
+                         "not of a " + (is_sweep_header(header) ? "sweep" : "run's events"));
+  if (is_sweep_header(header)) return sweep_figure(read_sweep(lines, header));
+  if (is_events_header(header)) return events_figure(read_events(lines, header));
+  const RunData run = read_run(lines, header);
+  std::optional<RunData> reference;
+  if (!o.against.empty()) {
+    CsvLines ref_lines(o.against);
+    reference = read_run(ref_lines, read_header(ref_lines));
+    bool shared = false;
+    for (const std::string& c : reference->channels)
+      shared =
+          shared || std::find(run.channels.begin(), run.channels.end(), c) != run.channels.end();
+    if (!shared)
+      throw PlotInputError(printable(o.against) + ": --against has none of the channels of " +
+                           printable(o.csv));
+  }
+  std::optional<EventsData> events;
+  if (!o.events.empty()) {
+    CsvLines event_lines(o.events);
+    events = read_events(event_lines, read_header(event_lines));
+  }
+  return run_figure(run, reference ? &*reference : nullptr, events ? &*events : nullptr);
+}
+
+std::string describe(int status) {
+  if (WIFEXITED(status)) return "exited with status " + std::to_string(WEXITSTATUS(status));
+  if (WIFSIGNALED(status))
+    return "was killed by signal " + std::to_string(WTERMSIG(status)) + " (" +
+           strsignal(WTERMSIG(status)) + ")";
+  return "ended with wait status " + std::to_string(status);
+}
+
+// Runs `gnuplot -c /dev/stdin NAME...` with the script on its standard input and its standard
+// output, where the script draws, on `out`. The names become ARG1, ARG2, ...: never commands.
+void run_gnuplot(const std::string& script, const std::vector<std::string>& names,
+                 AtomicFile& out) {
+  std::fflush(out.stream());
+  int script_pipe[2];
+  if (pipe2(script_pipe, O_CLOEXEC) != 0)
+    throw GnuplotError(std::string("cannot start gnuplot: ") + std::strerror(errno));
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, script_pipe[0], STDIN_FILENO);
+  posix_spawn_file_actions_adddup2(&actions, fileno(out.stream()), STDOUT_FILENO);
+  // This process ignores SIGPIPE (a gnuplot that stops reading early is reported by its exit
+  // status); gnuplot gets the default action back.
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  sigset_t defaults;
+  sigemptyset(&defaults);
+  sigaddset(&defaults, SIGPIPE);
+  posix_spawnattr_setsigdefault(&attributes, &defaults);
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF);
+  std::vector<std::string> args = {"gnuplot", "-c", "/dev/stdin"};
+  args.insert(args.end(), names.begin(), names.end());
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  const int error = posix_spawnp(&pid, "gnuplot", &actions, &attributes, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  posix_spawnattr_destroy(&attributes);
+  close(script_pipe[0]);
+  if (error != 0) {
+    close(script_pipe[1]);
+    throw GnuplotError(std::string("cannot start gnuplot: ") + std::strerror(error) +
+                       " (is it installed and on PATH? Debian: apt install gnuplot-nox)");
+  }
+  for (std::size_t done = 0; done < script.size();) {
+    const ssize_t n = write(script_pipe[1], script.data() + done, script.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;  // gnuplot stopped reading: its status says why
+    done += static_cast<std::size_t>(n);
+  }
+  close(script_pipe[1]);
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0)
+    if (errno != EINTR)
+      throw GnuplotError(std::string("waiting for gnuplot: ") + std::strerror(errno));
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw GnuplotError("gnuplot " + describe(status));
+  struct stat drawn;
+  if (!out.in_place() && fstat(fileno(out.stream()), &drawn) == 0 && drawn.st_size == 0)
+    throw GnuplotError("gnuplot exited normally but drew nothing");
 }
 
 }  // namespace
 
-std::string plot_script(const std::string& csv, const std::string& header, const std::string& out) {
-  std::vector<std::string> columns;
-  std::stringstream fields(header);
-  for (std::string f; std::getline(fields, f, ',');) columns.push_back(f);
-  if (columns.size() < 2 || columns[0] != "t")
-    throw std::invalid_argument(csv + ": not a CSV of impact run (its header is '" + header +
-                                "', expected t,<channels>)");
-  const auto dot = out.rfind('.');
-  const std::string ext = dot == std::string::npos ? "" : out.substr(dot + 1);
-  std::string terminal;
-  const int rows = static_cast<int>(columns.size()) - 1;
-  if (ext == "png")
-    terminal = "pngcairo size 1000," + std::to_string(260 * rows + 60) + " font ',10'";
-  else if (ext == "pdf")
-    terminal = "pdfcairo size 7in," + std::to_string(2 * rows + 1) + "in font ',8'";
-  else if (ext == "svg")
-    terminal = "svg size 1000," + std::to_string(260 * rows + 60) + " dynamic font ',10'";
-  else
-    throw std::invalid_argument(out + ": --out must end in .png, .pdf or .svg");
-  std::ostringstream gp;
-  gp << "set terminal " << terminal << "\nset output " << quoted(out)
-     << "\nset datafile separator ','\nset grid\nset key off\n"
-     << "set multiplot layout " << rows << ",1 title " << quoted(csv) << " noenhanced\n"
-     << "set xlabel 't [s]'\n";
-  for (std::size_t c = 1; c < columns.size(); ++c) {
-    const auto panel = kPanels.find(columns[c]);
-    if (panel == kPanels.end())
-      throw std::invalid_argument(csv + ": unknown channel '" + columns[c] + "' in the header");
-    gp << "set ylabel " << quoted(panel->second.ylabel) << "\nplot " << quoted(csv)
-       << " using 1:" << c + 1 << " skip 1 with " << panel->second.style << " lc rgb '#0072B2'\n";
-  }
-  gp << "unset multiplot\n";
-  return gp.str();
+CLI::App* add_plot_command(CLI::App& app, PlotOptions& o) {
+  CLI::App* cmd = app.add_subcommand(
+      "plot",
+      "Draw a CSV of impact run (one panel per channel), of its --events, or of impact sweep (one "
+      "panel per quantity against the first varied key) with gnuplot.");
+  cmd->add_option("CSV", o.csv, "A CSV written by impact run, run --events or sweep")->required();
+  cmd->add_option("--out,-o", o.out,
+                  "The figure: .png, .pdf or .svg (default: the CSV's name with .png). Written to "
+                  "a temporary file and renamed when gnuplot succeeds.");
+  cmd->add_option("--against", o.against,
+                  "Overlay a reference run's channels, dashed: a CSV of impact run, e.g. of the "
+                  "exact solution: impact run SCENE --set method.name=exact -o ref.csv");
+  cmd->add_option("--events", o.events,
+                  "Mark the run's events (impact run --events ev.csv) on every panel, one dotted "
+                  "line per event, coloured by kind");
+  cmd->footer(wrap(
+      "A run's E channel is v^2/2 - f u (3-1) for a constant force and v^2/2 - f(0) u(0) - W(t) "
+      "for a force f(t); the figure says so. A sweep with more than one varied key gets one curve "
+      "per combination of the other keys' values (at most 8). Each curve of more than 8192 "
+      "points is drawn through the first, lowest, highest and last value of every group of "
+      "consecutive rows (4096 to 8192 groups), which keeps every extreme and every impulse; the "
+      "figure says so. Lines longer than 65536 bytes or more than 1e8 rows are refused.",
+      kHelpWidth));
+  return cmd;
 }
 
-int plot_command(const std::string& csv, const std::string& out) {
-  std::ifstream in(csv);
-  std::string header;
-  if (!in || !std::getline(in, header)) {
-    std::fprintf(stderr, "impact: error: %s: cannot read the CSV\n", csv.c_str());
-    return 2;
-  }
-  std::string script;
+int plot_command(const PlotOptions& o) {
+  std::signal(SIGPIPE, SIG_IGN);
   try {
-    script = plot_script(csv, header, out);
-  } catch (const std::invalid_argument& e) {
+    const std::string out = o.out.empty() ? default_out(o.csv) : o.out;
+    const std::string format = figure_format(out);
+    const std::string script = gnuplot_script(read_figure(o), format);
+    AtomicFile file(out);
+    try {
+      run_gnuplot(script, {o.csv, o.against, o.events}, file);
+    } catch (const GnuplotError& e) {
+      throw GnuplotError(printable(o.csv) + ": " + e.what() + "; " +
+                         (file.in_place() ? "the figure may be incomplete"
+                                          : printable(out) + " is left as it was"));
+    }
+    file.commit();
+    return 0;
+  } catch (const PlotInputError& e) {
     std::fprintf(stderr, "impact: error: %s\n", e.what());
-    return 2;
+    return kBadInput;
+  } catch (const OutputError& e) {
+    std::fprintf(stderr, "impact: error: %s\n", e.what());
+    return e.bad_path ? kBadInput : kFailure;
+  } catch (const std::exception& e) {  // gnuplot's failure, or out of memory: after unwinding,
+    std::fprintf(stderr, "impact: error: %s\n", e.what());  // so no temporary is left
+    return kFailure;
   }
-  std::FILE* gnuplot = popen("gnuplot", "w");
-  if (!gnuplot) {
-    std::fprintf(stderr, "impact: error: cannot start gnuplot (install gnuplot-nox)\n");
-    return 1;
-  }
-  std::fputs(script.c_str(), gnuplot);
-  const int status = pclose(gnuplot);
-  if (status != 0) {
-    std::fprintf(stderr, "impact: error: gnuplot failed on %s (status %d)\n", csv.c_str(), status);
-    return 1;
-  }
-  return 0;
 }
 
 }  // namespace impact::cli

@@ -1,17 +1,23 @@
-// `impact plot CSV [--out FILE]`: a quick look at one run, one panel per channel of its CSV
-// (u, v, N, E, iterations), in the style of the paper figures, drawn by gnuplot.
+// `impact plot CSV [--out FILE] [--against REF.csv] [--events EVENTS.csv]`: a quick look at a run
+// (one panel per channel), at its events, or at a sweep (one panel per quantity against the varied
+// key), drawn by gnuplot.
 #pragma once
 
+#include <CLI/CLI.hpp>
 #include <string>
 
 namespace impact::cli {
 
-// The gnuplot script that draws `csv` (whose header line is `header`) into `out` (.png, .pdf or
-// .svg); throws std::invalid_argument for a header without a channel or an unknown extension.
-std::string plot_script(const std::string& csv, const std::string& header, const std::string& out);
+struct PlotOptions {
+  std::string csv, out, against, events;
+};
 
-// Reads the CSV's header, runs gnuplot on the script; returns the exit code (0, 1 when gnuplot
-// fails, 2 for a bad CSV or output name).
-int plot_command(const std::string& csv, const std::string& out);
+// Adds the `plot` subcommand, whose options fill `options`.
+CLI::App* add_plot_command(CLI::App& app, PlotOptions& options);
+
+// Reads the CSVs, draws the figure with gnuplot into a temporary file and renames it over --out
+// when gnuplot succeeded; returns the exit code: 0, 1 when gnuplot cannot start or fails or the
+// figure cannot be written, 2 for a bad CSV or output name.
+int plot_command(const PlotOptions& options);
 
 }  // namespace impact::cli

@@ -4,6 +4,8 @@
 #include <sys/resource.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <memory>
 #include <string>
@@ -13,6 +15,7 @@
 #include "cli/sweep_csv.hpp"
 #include "impact/output.hpp"
 #include "scene/scene_error.hpp"
+#include "scene/toml_text.hpp"
 
 namespace impact::cli {
 namespace {
@@ -25,7 +28,20 @@ struct Part {
 };
 
 [[noreturn]] void reject(const std::string& path, const std::string& why) {
-  throw SceneError("--merge: " + path + ": " + why);
+  throw SceneError("--merge: " + printable(path) + ": " + why);
+}
+
+// Why a part cannot be opened, and what was likely meant: --merge takes every word up to the next
+// option as a part, and an option right after it as one too.
+std::string cannot_open(const std::string& path, int error) {
+  std::string why = std::string("cannot open the part: ") + std::strerror(error);
+  if (path.starts_with("-"))
+    why +=
+        " (this looks like an option: give the parts right after --merge, e.g. --merge "
+        "p1.csv p2.csv -o all.csv)";
+  else if (error == ENOENT && path.find(',') != std::string::npos)
+    why += " (parts are separated by spaces, not commas)";
+  return why;
 }
 
 // A whole line, or false at the end of the file; a last line without its newline is a part cut
@@ -52,7 +68,7 @@ int merge_parts(const std::vector<std::string>& paths, const std::string& out) {
   std::vector<Part> parts;
   for (const std::string& path : paths) {
     Part part{path, std::make_unique<std::ifstream>(path, std::ios::binary), {}, {}};
-    if (!*part.in) reject(path, "cannot open it");
+    if (!*part.in) reject(path, cannot_open(path, errno));
     std::string first;
     const auto line = read_line(part, first) ? parse_part_line(first) : std::nullopt;
     if (!line) reject(path, "not a part of a sweep (its first line is not '# impact sweep part')");
