@@ -58,6 +58,7 @@ help:
 	@echo "make claims-md    regenerate paper_notes/claims.md from claims_source.md and the references"
 	@echo "make build        configure and build everything, tests included"
 	@echo "make performance  Google Benchmark throughput (ns per step) and the ensemble; not in all"
+	@echo "make work_precision-siconos  the work-precision study with Siconos's solvers (installs it)"
 	@echo "make refresh-timing-figures  measure again and update the committed timing figures:"
 	@echo "                  $(sort $(basename $(TIMING_FIGURES)))"
 	@echo "make clean        remove $(BUILD)/ and $(RESULTS)/"
@@ -119,6 +120,16 @@ refresh-timing-figures:
 	@$(MAKE) work_precision stability performance
 	@cp $(addprefix $(TIMING_DIR)/,$(TIMING_FIGURES)) figures/
 	@echo "refresh-timing-figures: $(words $(TIMING_FIGURES)) files copied to figures/"
+
+# Siconos's Moreau-Jean and LSODAR beside every method in the work-precision study: opt-in, since it
+# installs libsiconos-kernel-dev and builds the study again in build-siconos/ (the figures go to
+# $(TIMING_DIR), as the study's always do; refresh-timing-figures copies them to figures/).
+SICONOS_BUILD ?= build-siconos
+.PHONY: work_precision-siconos
+work_precision-siconos:
+	@IMPACT_EXTRA_PACKAGES=libsiconos-kernel-dev bash .ci/deps.sh
+	@rm -f $(addprefix $(TIMING_DIR)/,$(work_precision_FIGURES))
+	@$(MAKE) BUILD=$(SICONOS_BUILD) CMAKE_FLAGS="$(CMAKE_FLAGS) -DIMPACT_SICONOS=ON" work_precision
 
 # The claims ledger: `claims` prints the verdicts with the numbers of the latest results (else the
 # committed references); `claims-md` regenerates paper_notes/claims.md from claims_source.md and
