@@ -84,7 +84,7 @@ TEST_CASE("cli: figure 3 without COR writes 10001 rows and conserves the energy"
   REQUIRE(r.code == 0);
   CHECK(r.out.empty());  // the CSV goes to the file, the summary to standard error
   CHECK_THAT(r.err, Contains("direct") && Contains("10000 steps"));
-  CHECK(dir.entries() == std::set<std::string>{"X.csv"});
+  CHECK(dir.entries() == std::set<std::string>{"X.csv", "X.csv.json"});
 
   Csv csv = read_csv(dir / "X.csv");
   CHECK(csv.header == "t,u,v,N,E");
@@ -135,7 +135,7 @@ TEST_CASE("cli: the figure 4 scenes finish with finite values", "[cli]") {
     }
     CHECK(finite);
     CHECK(above_floor);
-    CHECK(dir.entries() == std::set<std::string>{"X.csv"});
+    CHECK(dir.entries() == std::set<std::string>{"X.csv", "X.csv.json"});
   }
 }
 
@@ -208,7 +208,7 @@ TEST_CASE("cli: --unset removes a key for one run", "[cli]") {
   CHECK_THAT(r.err, Contains("--unset floor.e: there is no floor.e in") && Contains("cor075.toml"));
   r = dir.run("run " + scene + " --unset -o Y.csv");
   CHECK(r.code == 2);
-  CHECK(dir.entries() == std::set<std::string>{"X.csv"});
+  CHECK(dir.entries() == std::set<std::string>{"X.csv", "X.csv.json"});
 }
 
 TEST_CASE("cli: a bad output path exits 2 and leaves nothing behind", "[cli]") {

@@ -110,7 +110,8 @@ TEST_CASE("events: --events for a bouncing ball gives the closed-form impact tim
     // The first impact's velocities: -V before, e V after (exact) or e |v^l| (direct).
     CHECK(events[0].v_before == Approx(-std::sqrt(2 * kG * H)).epsilon(1e-12));
   }
-  CHECK(dir.entries() == std::set<std::string>{"ball.toml", "rows.csv", "events.csv"});
+  CHECK(dir.entries() ==
+        std::set<std::string>{"ball.toml", "rows.csv", "rows.csv.json", "events.csv"});
   (void)scene;
 }
 

@@ -220,12 +220,22 @@ TEST_CASE("output paths: a name longer than NAME_MAX or PATH_MAX exits 2 before 
   TempDir dir;
   dir.write("s.toml", kShort);
   dir.write("overflow.toml", kOverflow);
-  // 255 bytes is the longest name (NAME_MAX): it works, its temporary's name is cut to fit.
+  // 255 bytes is the longest name (NAME_MAX): it works, its temporary's name is cut to fit; its
+  // provenance sidecar would be 260 bytes long, so it is refused before the run unless left out.
   const std::string longest = std::string(251, 'x') + ".csv";
-  Result r = dir.run("run s.toml -q -o " + longest);
+  CHECK_FAILS_CLEANLY(dir, "run s.toml -q -o " + longest, 2,
+                      Contains(longest + ".json: the file name is 260 bytes long"));
+  Result r = dir.run("run s.toml -q --no-provenance -o " + longest);
   CHECK(r.code == 0);
   CHECK(dir.entries() == std::set<std::string>{"s.toml", "overflow.toml", longest});
   std::filesystem::remove(dir / longest);
+  const std::string with_sidecar = std::string(246, 'x') + ".csv";
+  r = dir.run("run s.toml -q -o " + with_sidecar);
+  CHECK(r.code == 0);
+  CHECK(dir.entries() ==
+        std::set<std::string>{"s.toml", "overflow.toml", with_sidecar, with_sidecar + ".json"});
+  std::filesystem::remove(dir / with_sidecar);
+  std::filesystem::remove(dir / (with_sidecar + ".json"));
   // 256 bytes: refused at once (it used to fail at the rename after the whole run, exit 1).
   const std::string too_long = std::string(252, 'x') + ".csv";
   for (const std::string scene : {"s.toml", "overflow.toml"})

@@ -121,13 +121,14 @@ TEST_CASE("outputs: running out of memory leaves no temporary and says so",
                                "; \"$IMPACT\" run s.toml -q -o uv.csv --events ev.csv");
     if (r.code == 0) {
       ++ran;
-      CHECK(dir.entries() == std::set<std::string>{"s.toml", "uv.csv", "ev.csv"});
+      CHECK(dir.entries() == std::set<std::string>{"s.toml", "uv.csv", "uv.csv.json", "ev.csv"});
     } else {
       refused += r.code == 1;
       if (r.code == 1) CHECK_THAT(r.err, Contains("out of memory"));
       CHECK(dir.entries() == std::set<std::string>{"s.toml"});
     }
     std::filesystem::remove(dir / "uv.csv");
+    std::filesystem::remove(dir / "uv.csv.json");
     std::filesystem::remove(dir / "ev.csv");
   }
   CHECK(ran > 0);

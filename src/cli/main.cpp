@@ -12,6 +12,7 @@
 #include "cli/sweep.hpp"
 #include "impact/output.hpp"
 #include "impact/run.hpp"
+#include "impact/version.hpp"
 #include "scene/read_scene.hpp"
 #include "scene/scene_help.hpp"
 
@@ -30,7 +31,8 @@ int main(int argc, char** argv) {
       "Reproduces Ahn and Wolf, Dynamic impact of a particle, Involve 6:2 (2013).",
       "impact"};
   app.formatter(std::make_shared<impact::cli::WrappingFormatter>());  // before the subcommands
-  app.set_version_flag("--version", "impact 0.1.0");
+  app.set_version_flag("--version", "impact " + std::string(impact::version()) + " (commit " +
+                                        std::string(impact::commit()) + ")");
   const std::string epilogue =  // the exit codes and an example
       "Exit codes: 0 ok, 1 numerical failure or write error, 2 bad input.\n"
       "Example: impact run experiments/figure3/no_cor.toml --set time.h=1e-4 -o u.csv";
@@ -84,6 +86,10 @@ int main(int argc, char** argv) {
                    "the most events (it stops when they pass it)")
       ->default_val(1e8)
       ->check(CLI::PositiveNumber);
+  run_cmd->add_flag("--no-provenance", run_options.no_provenance,
+                    "Do not write OUT.json beside --out: where the rows came from (version, "
+                    "commit, scene text and --set, the scene as run with its defaults, processor, "
+                    "date, summary); not written for standard output, a pipe or a device");
   run_cmd->add_flag("--quiet,-q", run_options.quiet,
                     "Do not print the progress and summary lines on standard error");
   run_cmd->footer(
@@ -121,8 +127,12 @@ int main(int argc, char** argv) {
   if (plot_cmd->parsed()) return impact::cli::plot_command(plot);
   bool in_place = true;
   try {
-    if (sweep_cmd->parsed()) return impact::cli::run_sweep(sweep);
+    if (sweep_cmd->parsed()) {
+      sweep.arguments.assign(argv, argv + argc);
+      return impact::cli::run_sweep(sweep);
+    }
     run_options.against_exact = against == "exact";
+    run_options.arguments.assign(argv, argv + argc);
     return impact::cli::run_command(run_options, in_place);
   } catch (const impact::SceneError& e) {
     std::fprintf(stderr, "impact: error: %s\n", e.what());

@@ -10,6 +10,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <optional>
 #include <vector>
 
@@ -55,6 +56,20 @@ std::string read_header(CsvLines& lines) {
   return header;
 }
 
+// What the provenance sidecar of a run's CSV (CSV.json, written by impact run) says of its force;
+// nothing when there is none, or it is not one of ours (read only as far as 1 MiB).
+std::optional<bool> force_depends_on_t(const std::string& csv) {
+  std::ifstream in(csv + ".json", std::ios::binary);
+  std::string text(1 << 20, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  for (const bool value : {false, true})
+    if (text.find(std::string("\n  \"force_depends_on_t\": ") + (value ? "true" : "false") +
+                  ",\n") != std::string::npos)
+      return value;
+  return std::nullopt;
+}
+
 Figure read_figure(const PlotOptions& o) {
   CsvLines lines(o.csv);
   const std::string header = read_header(lines);
@@ -64,7 +79,8 @@ Figure read_figure(const PlotOptions& o) {
                          "not of a " + (is_sweep_header(header) ? "sweep" : "run's events"));
   if (is_sweep_header(header)) return sweep_figure(read_sweep(lines, header));
   if (is_events_header(header)) return events_figure(read_events(lines, header));
-  const RunData run = read_run(lines, header);
+  RunData run = read_run(lines, header);
+  run.force_depends_on_t = force_depends_on_t(o.csv);
   std::optional<RunData> reference;
   if (!o.against.empty()) {
     CsvLines ref_lines(o.against);

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -94,6 +95,9 @@ struct RunData {
   std::vector<std::string> channels;
   std::vector<Curve> curves;
   std::int64_t rows = 0;
+  // Whether the run's force depends on t, from its provenance sidecar (CSV.json), when there is
+  // one: it says which energy the E channel is.
+  std::optional<bool> force_depends_on_t;
 };
 RunData read_run(CsvLines& lines, const std::string& header);
 

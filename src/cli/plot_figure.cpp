@@ -47,7 +47,8 @@ const std::map<std::string, std::string> kQuantityLabels = {
     {"err_first_impact", "first impact time error [s]"},
 };
 
-// The E channel is (3-1) for a constant force; with f(t) the CSV does not say which it is.
+// The E channel is (3-1) for a constant force; with f(t) the CSV does not say which it is: its
+// provenance sidecar does, and without one both are named.
 const Text kEnergyNote{
     "E = v^2/2 - f u (3-1); with a force f(t), v^2/2 - f(0) u(0) - W(t), W the work of f "
     "(README, 'Time-dependent force')"};
@@ -95,7 +96,11 @@ Figure run_figure(const RunData& run, const RunData* against, const EventsData* 
   figure.title.push_back({"", Name::csv});
   if (run.curves.front().thinned()) figure.title.push_back(thinned_note(run.rows, run.curves[0]));
   if (std::count(run.channels.begin(), run.channels.end(), "E"))
-    figure.title.push_back(kEnergyNote);
+    figure.title.push_back(!run.force_depends_on_t ? kEnergyNote
+                           : *run.force_depends_on_t
+                               ? Text{"E = v^2/2 - f(0) u(0) - W(t), W the work of the force f(t) "
+                                      "(README, 'Time-dependent force')"}
+                               : Text{"E = v^2/2 - f u (3-1)"});
   for (std::size_t c = 0; c < run.channels.size(); ++c) {
     const ChannelStyle& style = kChannelStyles.at(run.channels[c]);
     Panel panel{.xlabel = "t [s]", .ylabel = style.ylabel};

@@ -5,12 +5,14 @@
 #include <cmath>
 #include <cstdio>
 #include <optional>
+#include <string>
 
 #include "cli/progress.hpp"
 #include "impact/event_log.hpp"
 #include "impact/output.hpp"
 #include "impact/registry.hpp"
 #include "impact/run_scene.hpp"
+#include "scene/provenance.hpp"
 #include "scene/read_scene.hpp"
 
 namespace impact::cli {
@@ -34,6 +36,10 @@ void check_paths(const RunOptions& o) {
   if (o.events.empty()) return;
   if (o.events != "-" && same_output(o.events, o.scene))
     throw OutputError(o.events + ": --events names the scene file itself; give another file name",
+                      true);
+  if (!out_to_stdout && same_output(o.events, o.out + ".json"))
+    throw OutputError(o.events + ": --events names the provenance file of --out (" + o.out +
+                          ".json); give the events another file",
                       true);
   if (same_output(o.events, o.out.empty() ? "-" : o.out))
     throw OutputError(o.events + ": --events and --out lead to the same output (the rows go to " +
@@ -68,26 +74,61 @@ class EventFile {
   double max_rows_, count_ = 0, bytes_ = 0;
 };
 
-void print_summary(const Scene& scene, const RunReport& report) {
+// The summary lines `impact run` prints on standard error (and keeps in the provenance).
+std::string summary_text(const Scene& scene, const RunReport& report) {
   const MethodInfo& method = method_info(scene.method);
-  std::fprintf(stderr, "impact: %s, %lld steps, %lld contact steps", method.name.data(),
-               static_cast<long long>(report.summary.steps),
-               static_cast<long long>(report.summary.contact_steps));
-  if (method.has_iterations)
-    std::fprintf(stderr, ", %lld iterations (max %d per step)",
-                 static_cast<long long>(report.summary.iterations), report.summary.max_iterations);
-  std::fprintf(stderr, ", %.3f s wall\n", report.seconds);
-  if (!report.errors) return;
+  char line[512];
+  std::snprintf(line, sizeof line, "impact: %s, %lld steps, %lld contact steps", method.name.data(),
+                static_cast<long long>(report.summary.steps),
+                static_cast<long long>(report.summary.contact_steps));
+  std::string text = line;
+  if (method.has_iterations) {
+    std::snprintf(line, sizeof line, ", %lld iterations (max %d per step)",
+                  static_cast<long long>(report.summary.iterations), report.summary.max_iterations);
+    text += line;
+  }
+  std::snprintf(line, sizeof line, ", %.3f s wall\n", report.seconds);
+  text += line;
+  if (!report.errors) return text;
   const ErrorNorms& e = *report.errors;
-  std::fprintf(stderr,
-               "impact: against exact: sup|u - u_exact| = %s, h sum|v - v_exact| = %s, "
-               "|E(T) - E_exact(T)| = %s, first impact time error = %s; the reference took "
-               "%.3f s wall\n",
-               round_trip(e.sup_u).c_str(), round_trip(e.l1_v).c_str(),
-               round_trip(e.energy_end).c_str(),
-               std::isnan(e.first_impact) ? "none (no impact in one of the two)"
-                                          : round_trip(e.first_impact).c_str(),
-               report.reference_seconds);
+  std::snprintf(line, sizeof line,
+                "impact: against exact: sup|u - u_exact| = %s, h sum|v - v_exact| = %s, "
+                "|E(T) - E_exact(T)| = %s, first impact time error = %s; the reference took "
+                "%.3f s wall\n",
+                round_trip(e.sup_u).c_str(), round_trip(e.l1_v).c_str(),
+                round_trip(e.energy_end).c_str(),
+                std::isnan(e.first_impact) ? "none (no impact in one of the two)"
+                                           : round_trip(e.first_impact).c_str(),
+                report.reference_seconds);
+  return text + line;
+}
+
+// The provenance of the rows (provenance.hpp).
+std::string provenance(const RunOptions& o, const Run& loaded, const RunReport& report) {
+  Provenance p;
+  p.command = "impact run";
+  p.arguments = o.arguments;
+  p.scene_path = o.scene;
+  p.scene_text = loaded.text;
+  p.overrides = o.overrides;
+  p.unsets = o.unsets;
+  p.scene = &loaded.scene;
+  const RunSummary& r = report.summary;
+  p.summary = {{"steps", std::to_string(r.steps)},
+               {"contact_steps", std::to_string(r.contact_steps)},
+               {"iterations", std::to_string(r.iterations)},
+               {"max_iterations_per_step", std::to_string(r.max_iterations)},
+               {"wall_s", json_number(report.seconds)}};
+  if (report.errors) {
+    const ErrorNorms& e = *report.errors;
+    p.summary.insert(p.summary.end(), {{"err_u_sup", json_number(e.sup_u)},
+                                       {"err_v_l1", json_number(e.l1_v)},
+                                       {"err_E_T", json_number(e.energy_end)},
+                                       {"err_first_impact", json_number(e.first_impact)},
+                                       {"reference_s", json_number(report.reference_seconds)}});
+  }
+  p.summary_line = summary_text(loaded.scene, report);
+  return provenance_json(p);
 }
 
 }  // namespace
@@ -125,6 +166,12 @@ int run_command(const RunOptions& o, bool& in_place) {
     events.emplace(o.events, o);
     in_place = in_place || events->file.in_place();
   }
+  // The provenance sidecar is opened with the outputs, so that a path it cannot have is refused
+  // before the run.
+  std::optional<AtomicFile> sidecar;
+  if (!o.no_provenance)
+    if (const std::string path = sidecar_path(o.out, file.in_place()); !path.empty())
+      sidecar.emplace(path);
   CsvWriter csv(file.stream(), scene.output.channels);
   csv.header();
   // Progress only where someone watches it: stderr is a terminal that the CSV does not go to.
@@ -141,13 +188,16 @@ int run_command(const RunOptions& o, bool& in_place) {
     progress.update(l);
   };
   const RunReport report = run_scene(scene, loaded.stepper, outputs);
+  if (sidecar) std::fputs(provenance(o, loaded, report).c_str(), sidecar->stream());
   // Every output whole before any is put in place: a failed one replaces none.
   file.close();
   if (events) events->file.close();
+  if (sidecar) sidecar->close();
   file.commit();
   if (events) events->file.commit();
+  if (sidecar) sidecar->commit();
   progress.finish();
-  if (!o.quiet) print_summary(scene, report);
+  if (!o.quiet) std::fputs(summary_text(scene, report).c_str(), stderr);
   return 0;
 }
 

@@ -1,5 +1,6 @@
 // `impact run SCENE`: the scene's trajectory as CSV rows, and with --events its impacts, sticks and
-// lifts as CSV rows of their own, each file written whole or not at all (output.hpp).
+// lifts as CSV rows of their own, each file written whole or not at all (output.hpp), with the
+// provenance of the rows in a sidecar OUT.json (provenance.hpp) when they go to a file.
 #pragma once
 
 #include <string>
@@ -8,14 +9,16 @@
 namespace impact::cli {
 
 struct RunOptions {
+  std::vector<std::string> arguments;  // the command line, for the provenance sidecar
   std::string scene;
   std::vector<std::string> overrides, unsets;
   std::string out;     // empty or "-": standard output
   std::string events;  // empty: no events; "-": standard output
   bool quiet = false;
   bool against_exact = false;
-  bool force = false;     // no limit on the rows and events written
-  double max_rows = 1e8;  // without force: the most rows, and the most events, a run writes
+  bool force = false;          // no limit on the rows and events written
+  double max_rows = 1e8;       // without force: the most rows, and the most events, a run writes
+  bool no_provenance = false;  // no OUT.json beside the rows
 };
 
 // Runs the scene and returns the exit code (0). Throws SceneError (bad input), OutputError,

@@ -1,14 +1,12 @@
 #include "cli/sweep.hpp"
 
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <charconv>
 #include <chrono>
 #include <cstdio>
-#include <fstream>
-#include <sstream>
+#include <optional>
 #include <thread>
 
 #include "cli/progress.hpp"
@@ -16,6 +14,7 @@
 #include "cli/sweep_runner.hpp"
 #include "impact/ensemble.hpp"
 #include "impact/output.hpp"
+#include "scene/provenance.hpp"
 #include "scene/sweep_grid.hpp"
 
 namespace impact::cli {
@@ -34,13 +33,6 @@ Shard parse_shard(const std::string& text) {
       !whole(std::string_view(text).substr(slash + 1), n) || n < 1 || k < 1 || k > n)
     throw SceneError("--shard " + text + ": expected K/N with 1 <= K <= N, e.g. 3/8");
   return {k - 1, n, true};
-}
-
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 }  // namespace
@@ -76,6 +68,8 @@ CLI::App* add_sweep_command(CLI::App& app, SweepOptions& o) {
   cmd->add_option("--out,-o", o.out,
                   "Output CSV file (default: standard output), renamed into place when complete");
   cmd->add_flag("--quiet,-q", o.quiet, "Do not print the progress and summary lines");
+  cmd->add_flag("--no-provenance", o.no_provenance,
+                "Do not write OUT.json, the provenance of the rows, beside --out");
   std::string keys;
   for (const std::string& k : sweep_keys()) keys += (keys.empty() ? "" : ", ") + k;
   cmd->footer(
@@ -134,21 +128,38 @@ int run_sweep(const SweepOptions& o) {
   if (!to_stdout && same_output(o.out, o.scene))
     throw OutputError(o.out + ": --out names the scene file itself; give another file name", true);
   AtomicFile file(o.out);
+  std::optional<AtomicFile> sidecar;  // opened before the run: a bad path is refused at once
+  if (!o.no_provenance)
+    if (const std::string path = sidecar_path(o.out, file.in_place()); !path.empty())
+      sidecar.emplace(path);
   std::string head;
   if (shard.given)
     head = part_line(shard.k + 1, shard.n, grid.size(),
-                     sweep_fingerprint(read_file(o.scene), o.sets, o.varies, quantities, against));
+                     sweep_fingerprint(grid.scene_text(), o.sets, o.varies, quantities, against));
   head += csv_header(grid, quantities);
   std::fputs(head.c_str(), file.stream());
 
   // Progress only where someone watches it: stderr is a terminal that the CSV does not go to.
   const SweepRun run = run_points(grid, quantities, against, shard, threads, o.instruction_set,
                                   file, !o.quiet && isatty(2) && !(to_stdout && isatty(1)));
+  const double seconds = seconds_since(start);
+  char line[256];
+  std::snprintf(
+      line, sizeof line, "impact sweep: %lld points, %lld failed, %d threads, %.3f s wall\n",
+      static_cast<long long>(run.points), static_cast<long long>(run.failed), threads, seconds);
+  if (sidecar) {
+    Provenance p{"impact sweep", o.arguments, o.scene, grid.scene_text(), o.sets, {},
+                 &grid.base(),   {},          line};
+    p.summary = {{"points", std::to_string(run.points)},
+                 {"failed", std::to_string(run.failed)},
+                 {"threads", std::to_string(threads)},
+                 {"wall_s", json_number(seconds)}};
+    std::fputs(provenance_json(p).c_str(), sidecar->stream());
+    sidecar->close();
+  }
   file.commit();
-  if (!o.quiet)
-    std::fprintf(stderr, "impact sweep: %lld points, %lld failed, %d threads, %.3f s wall\n",
-                 static_cast<long long>(run.points), static_cast<long long>(run.failed), threads,
-                 seconds_since(start));
+  if (sidecar) sidecar->commit();
+  if (!o.quiet) std::fputs(line, stderr);
   return run.failed > 0 ? 1 : 0;
 }
 

@@ -9,6 +9,7 @@
 namespace impact::cli {
 
 struct SweepOptions {
+  std::vector<std::string> arguments;  // the command line, for the provenance sidecar
   std::string scene;
   std::vector<std::string> sets, varies;
   std::string summary, against, shard;
@@ -17,6 +18,7 @@ struct SweepOptions {
   std::vector<std::string> merge;
   std::string out;
   bool quiet = false;
+  bool no_provenance = false;  // no OUT.json beside the rows
 };
 
 // Adds the `sweep` subcommand, whose options fill `options`.

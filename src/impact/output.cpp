@@ -18,9 +18,10 @@ namespace impact {
 namespace {
 
 // The temporary files being written, removed by the signal handler if a signal ends the run (the
-// CLI writes at most two at a time: the rows and the events). A slot's g_temp_set is cleared
-// before its name changes and set after, so that the handler never reads a half-copied name.
-constexpr int kTempSlots = 2;
+// CLI writes at most three at a time: the rows, the events and the rows' provenance). A slot's
+// g_temp_set is cleared before its name changes and set after, so that the handler never reads a
+// half-copied name.
+constexpr int kTempSlots = 3;
 char g_temp_path[kTempSlots][PATH_MAX];
 volatile std::sig_atomic_t g_temp_set[kTempSlots] = {};
 

@@ -154,8 +154,17 @@ toml::table parse_toml(std::string_view text, const std::string& source) {
   }
 }
 
-// The whole file, read by hand rather than by toml::parse_file, so that a pipe (/dev/stdin) works,
-// a directory or a device that never ends (/dev/zero) is rejected, and an error says why.
+Scene parse_with(toml::table root, const std::string& source,
+                 const std::vector<std::string>& overrides,
+                 const std::vector<std::string>& unsets) {
+  Origins origins(source);
+  for (const auto& u : unsets) apply_unset(root, u, overrides, origins);
+  for (const auto& o : overrides) apply_set(root, o, origins);
+  return build(root, origins);
+}
+
+}  // namespace
+
 std::string read_scene_file(const std::string& path) {
   const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0) throw SceneError(path + ": cannot open the scene file: " + std::strerror(errno));
@@ -186,17 +195,6 @@ std::string read_scene_file(const std::string& path) {
   return text;
 }
 
-Scene parse_with(toml::table root, const std::string& source,
-                 const std::vector<std::string>& overrides,
-                 const std::vector<std::string>& unsets) {
-  Origins origins(source);
-  for (const auto& u : unsets) apply_unset(root, u, overrides, origins);
-  for (const auto& o : overrides) apply_set(root, o, origins);
-  return build(root, origins);
-}
-
-}  // namespace
-
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides,
                  const std::vector<std::string>& unsets) {
   return parse_with(parse_toml(read_scene_file(path), path), path, overrides, unsets);
@@ -210,10 +208,11 @@ Scene parse_scene(std::string_view text, const std::string& source,
 
 Run load_run(const std::string& path, const std::vector<std::string>& overrides,
              const std::vector<std::string>& unsets) {
-  Scene scene = load_scene(path, overrides, unsets);
+  std::string text = read_scene_file(path);
+  Scene scene = parse_scene(text, path, overrides, unsets);
   try {
     AnyStepper stepper = make_stepper(scene);
-    return {std::move(scene), std::move(stepper)};
+    return {std::move(scene), std::move(stepper), std::move(text)};
   } catch (const std::invalid_argument& e) {
     throw SceneError(path + ": " + e.what());  // the reader's ranges should have caught it
   }

@@ -26,10 +26,16 @@ Scene parse_scene(std::string_view text, const std::string& source,
                   const std::vector<std::string>& overrides = {},
                   const std::vector<std::string>& unsets = {});
 
-// A scene and its solver, built once.
+// The text of a scene file, read by hand rather than by toml::parse_file, so that a pipe
+// (/dev/stdin) works, a directory or a device that never ends (/dev/zero) is rejected, and an
+// error says why. Throws SceneError.
+std::string read_scene_file(const std::string& path);
+
+// A scene and its solver, built once, and the file's text as it was read.
 struct Run {
   Scene scene;
   AnyStepper stepper;
+  std::string text;
 };
 Run load_run(const std::string& path, const std::vector<std::string>& overrides = {},
              const std::vector<std::string>& unsets = {});

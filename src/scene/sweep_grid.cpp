@@ -192,7 +192,9 @@ SweepGrid::SweepGrid(const std::string& scene_path, const std::vector<std::strin
   try {
     std::vector<std::string> all = overrides_;
     for (const std::string& o : this->overrides(0)) all.push_back(o);
-    base_ = load_run(path_, all).scene;
+    Run read = load_run(path_, all);
+    base_ = std::move(read.scene);
+    text_ = std::move(read.text);
   } catch (const SceneError& e) {
     throw SceneError(describe(0) + ": " + e.what());
   }

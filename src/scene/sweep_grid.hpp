@@ -57,6 +57,8 @@ class SweepGrid {
 
   std::int64_t size() const { return size_; }
   const std::vector<SweepAxis>& axes() const { return axes_; }
+  // The scene file's text, as read.
+  const std::string& scene_text() const { return text_; }
   // Point 0's scene.
   const Scene& base() const { return base_; }
 
@@ -87,6 +89,7 @@ class SweepGrid {
   std::int64_t size_ = 1;
   bool grid_varies_ = false;
   Scene base_;
+  std::string text_;
 };
 
 }  // namespace impact
