@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "impact/format.hpp"
 #include "scene/read_scene.hpp"
 #include "scene/scene_keys.hpp"
 #include "scene/suggest.hpp"
@@ -136,12 +137,12 @@ TEST_CASE("keys: the reader enforces what the key tables say", "[keys]") {
       const impact::Range& r = spec.range;
       if (r.text().empty()) return;
       const double below = r.lo_open ? r.lo : r.lo - 1;
-      CHECK_SCENE_ERROR(parse(cor_free, with(impact::show_number(below))),
+      CHECK_SCENE_ERROR(parse(cor_free, with(impact::shortest(below))),
                         Contains(key + " = ") && Contains(r.text()));
       if (r.bounded()) {
-        CHECK_SCENE_ERROR(parse(cor_free, with(impact::show_number(2 * r.hi + 1))),
+        CHECK_SCENE_ERROR(parse(cor_free, with(impact::shortest(2 * r.hi + 1))),
                           Contains(key + " = ") && Contains(r.text()));
-        CHECK_NOTHROW(parse(cor_free, with(impact::show_number(r.hi))));
+        CHECK_NOTHROW(parse(cor_free, with(impact::shortest(r.hi))));
       }
     } else if (spec.type == impact::KeyType::name && key != "method.name") {
       for (auto choice : spec.choices()) CHECK_NOTHROW(parse(cor_free, with(std::string(choice))));

@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "impact/format.hpp"
 #include "impact/output.hpp"
 
 namespace impact {
@@ -12,7 +13,7 @@ StabilityRun run_stability_check(const Scene& scene, const StabilityOptions& opt
   run.h = scene.grid.h;
   const auto start = std::chrono::steady_clock::now();
   run.check = check_stability(scene, options);
-  run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  run.seconds = seconds_since(start);
   return run;
 }
 

@@ -9,13 +9,11 @@
 #include <cstdio>
 #include <string>
 
+#include "impact/format.hpp"
+
 namespace impact::cli {
 
 using Clock = std::chrono::steady_clock;
-
-inline double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 class Progress {
  public:

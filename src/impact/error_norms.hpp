@@ -11,6 +11,7 @@
 #include "impact/contact.hpp"
 #include "impact/event_track.hpp"
 #include "impact/exact.hpp"
+#include "impact/format.hpp"
 #include "impact/model.hpp"
 #include "impact/ode_flight.hpp"
 #include "impact/run.hpp"
@@ -117,8 +118,7 @@ class ErrorObserver {
       e_.l1_v += grid_.h * std::fabs(p.s.v - ref.v);
     }
     pending_.clear();
-    reference_seconds_ +=
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    reference_seconds_ += seconds_since(start);
   }
 
   ReferenceSolution exact_;

@@ -1,68 +1,16 @@
-// Output: CSV rows in round-trip precision, written to a temporary file beside the target and
-// renamed into place only when the run succeeded, so a failed run leaves no half-written file.
+// Output: the CSV rows of a run in round-trip precision (format.hpp), written through an AtomicFile
+// (atomic_file.hpp), so a failed run leaves no half-written file.
 #pragma once
 
-#include <cstdint>
 #include <cstdio>
-#include <stdexcept>
-#include <string>
 #include <vector>
 
-#include "impact/model.hpp"
+#include "impact/atomic_file.hpp"
+#include "impact/format.hpp"
 #include "impact/row_stream.hpp"
 #include "impact/scene.hpp"
 
 namespace impact {
-
-// The output could not be created or written (exit code 1, or 2 when the path itself is bad).
-class OutputError : public std::runtime_error {
- public:
-  OutputError(const std::string& what, bool bad_path)
-      : std::runtime_error(what), bad_path(bad_path) {}
-  bool bad_path;
-};
-
-// A file that appears at `path` only on commit(); "-" or "" means standard output. Symbolic links
-// are followed, and stay: the file a link names is replaced, or created if the link dangles. What
-// is not a regular file is written in place, as it stands: a device or a named pipe (renaming over
-// it would replace the node itself), and an open descriptor such as /dev/stdout, /dev/fd/N or
-// /proc/self/fd/N (written through the caller's descriptor, so that `>>` appends, even when it is
-// redirected to a regular file). Refused before any work, as bad paths: a read-only file, a
-// directory that is not writable (checked by mode bits too, so also for root), a name longer than
-// NAME_MAX or a path longer than PATH_MAX. Every signal whose default action ends the process
-// removes the temporary first.
-class AtomicFile {
- public:
-  explicit AtomicFile(const std::string& path);
-  AtomicFile(const AtomicFile&) = delete;
-  AtomicFile& operator=(const AtomicFile&) = delete;
-  ~AtomicFile();  // removes the temporary file unless committed
-
-  std::FILE* stream() { return stream_; }
-  // Throws OutputError if a write has failed so far (e.g. the disk is full), so that a long run
-  // can stop early instead of computing output that cannot be stored.
-  void check() const;
-  // Flushes and closes the file; throws OutputError if anything written so far failed. The
-  // output is not in place yet: a caller that writes several files closes them all, then
-  // commits them, so that a failure of one replaces none.
-  void close();
-  // close() if not done, then renames the temporary over the target.
-  void commit();
-  // Written as it goes (standard output, a device, a pipe, a descriptor), not through a temporary.
-  bool in_place() const { return temp_.empty(); }
-
- private:
-  void open_in_place(const std::string& target);
-  void forget_temp();
-
-  std::string path_;    // as given, for messages
-  std::string target_;  // the file that commit() replaces: path_ with symbolic links followed
-  std::string temp_;
-  std::FILE* stream_ = nullptr;
-  std::vector<char> buffer_;
-  int slot_ = -1;  // the signal handler's slot for temp_ (output.cpp), -1 for none
-  bool committed_ = false;
-};
 
 // Writes the header `t,<channels>` and one row per written step.
 class CsvWriter {
@@ -76,18 +24,5 @@ class CsvWriter {
   std::FILE* out_;
   std::vector<Channel> channels_;
 };
-
-// Whether two paths (given as outputs, or an output and an input) lead to the same file: the same
-// file reached (symbolic links followed, /dev/stdout and /dev/fd/N as the descriptor they stand
-// for, "-" as standard output), or, for a file not there yet, the same name in the same directory
-// (so ./new.csv, sub/../new.csv and an absolute spelling are one).
-bool same_output(const std::string& a, const std::string& b);
-
-// Appends x in round-trip precision (17 significant digits) to buf; returns the new end.
-char* format_double(char* buf, char* end, double x);
-// x in round-trip precision, as a string (for scenes, summaries and messages written as text).
-std::string round_trip(double x);
-// Writes `text` to `path` through an AtomicFile: the file appears whole or not at all.
-void write_text_file(const std::string& path, const std::string& text);
 
 }  // namespace impact

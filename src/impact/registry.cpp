@@ -1,17 +1,12 @@
 #include "impact/registry.hpp"
 
-#include <charconv>
 #include <stdexcept>
 #include <string>
 
+#include "impact/format.hpp"
+
 namespace impact {
 namespace {
-
-// The shortest decimal that reads back as x, for a message.
-std::string shortest(double x) {
-  char buf[32];
-  return std::string(buf, std::to_chars(buf, buf + sizeof buf, x).ptr);
-}
 
 // In the order of the MethodParams alternatives, so that method_info() can index by them.
 const MethodInfo kMethods[] = {

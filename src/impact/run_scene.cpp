@@ -52,8 +52,7 @@ RunReport run_scene(const Scene& scene, AnyStepper& stepper, const RunOutputs& o
   RunReport report;
   const bool sums = has(Channel::N) || has(Channel::iterations);
   report.summary = simulate_rows(stepper, scene.initial, scene.grid, stream, sums, watch);
-  const double total =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double total = seconds_since(start);
   if (errors) {
     report.errors = errors->result(report.summary);
     report.reference_seconds = errors->reference_seconds();

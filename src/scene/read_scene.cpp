@@ -14,6 +14,7 @@
 #include <limits>
 #include <sstream>
 
+#include "impact/format.hpp"
 #include "impact/work_energy.hpp"
 #include "scene/force_keys.hpp"
 #include "scene/key_reader.hpp"
@@ -85,7 +86,7 @@ Scene build(const toml::table& root, const Origins& origins) {
   check_force(r, root, scene);
   if (scene.initial.u < scene.model.phi)
     r.fail_value("initial", "u0", node_at(root, "initial", "u0"),
-                 "must be >= floor.phi = " + show_number(scene.model.phi) +
+                 "must be >= floor.phi = " + shortest(scene.model.phi) +
                      " (the particle starts above the floor)");
   const double h = scene.grid.h;
   if (h > scene.T)
@@ -94,7 +95,7 @@ Scene build(const toml::table& root, const Origins& origins) {
   const double ratio = scene.T / h;
   if (!(ratio <= kMaxGridSteps))
     r.fail_value("time", "h", node_at(root, "time", "h"),
-                 "T/h = " + show_number(ratio) +
+                 "T/h = " + shortest(ratio) +
                      " steps is too many to count exactly (at most 2^53 = 9007199254740992)");
   scene.grid = Grid::covering(scene.T, h);
 
@@ -105,9 +106,9 @@ Scene build(const toml::table& root, const Origins& origins) {
     if (c == Channel::E && !std::isfinite(initial_energy(scene.model, scene.initial)))
       r.fail("output", "channels",
              "E: the initial energy v0^2/2 - f(0) u0 (3-1) is beyond the double range (v0 = " +
-                 show_number(scene.initial.v) +
-                 ", f(0) = " + show_number(ForceFunction(scene.model).at(0.0)) +
-                 ", u0 = " + show_number(scene.initial.u) + ")");
+                 shortest(scene.initial.v) +
+                 ", f(0) = " + shortest(ForceFunction(scene.model).at(0.0)) +
+                 ", u0 = " + shortest(scene.initial.u) + ")");
   // Compliance has no impact law to apply a COR to: refuse rather than silently run elastic.
   if (scene.model.cor && !method.takes_cor) {
     const std::string& named = origins.of("method", "name");

@@ -1,5 +1,6 @@
 #include "scene/scene_keys.hpp"
 
+#include "impact/format.hpp"
 #include "scene/toml_text.hpp"
 
 namespace impact {
@@ -111,10 +112,8 @@ std::string Range::text() const {
   if (lo == -std::numeric_limits<double>::infinity() &&
       hi == std::numeric_limits<double>::infinity())
     return "";
-  if (hi == std::numeric_limits<double>::infinity())
-    return (lo_open ? "> " : ">= ") + show_number(lo);
-  return std::string("in ") + (lo_open ? "(" : "[") + show_number(lo) + ", " + show_number(hi) +
-         "]";
+  if (hi == std::numeric_limits<double>::infinity()) return (lo_open ? "> " : ">= ") + shortest(lo);
+  return std::string("in ") + (lo_open ? "(" : "[") + shortest(lo) + ", " + shortest(hi) + "]";
 }
 
 std::span<const TableSpec> scene_tables() {

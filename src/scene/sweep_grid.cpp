@@ -8,6 +8,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "impact/format.hpp"
 #include "impact/output.hpp"
 #include "impact/work_energy.hpp"
 #include "scene/read_scene.hpp"
@@ -283,11 +284,11 @@ void SweepGrid::check_cross_keys(std::int64_t i, Scene& scene) const {
   };
   const double u0 = scene.initial.u, phi = scene.model.phi, T = scene.T, h = scene.grid.h;
   if (u0 < phi)
-    fail("initial.u0 = " + show_number(u0) + ": must be >= floor.phi = " + show_number(phi) +
+    fail("initial.u0 = " + shortest(u0) + ": must be >= floor.phi = " + shortest(phi) +
          " (the particle starts above the floor)");
-  if (h > T) fail("time.h = " + show_number(h) + ": must be <= time.T = " + show_number(T));
+  if (h > T) fail("time.h = " + shortest(h) + ": must be <= time.T = " + shortest(T));
   if (!(T / h <= kMaxGridSteps))
-    fail("time.h = " + show_number(h) + ": T/h = " + show_number(T / h) +
+    fail("time.h = " + shortest(h) + ": T/h = " + shortest(T / h) +
          " steps is too many to count exactly (at most 2^53 = 9007199254740992)");
   const auto& channels = scene.output.channels;
   if (std::find(channels.begin(), channels.end(), Channel::E) != channels.end() &&

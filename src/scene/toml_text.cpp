@@ -8,6 +8,8 @@
 #include <cstdio>
 #include <sstream>
 
+#include "impact/format.hpp"
+
 namespace impact {
 
 // A key as typed, with control characters shown as \xNN, so that a message cannot send escape
@@ -173,12 +175,6 @@ std::string line_and_column(std::string_view text, std::size_t at) {
   return std::to_string(line) + ":" + std::to_string(column);
 }
 
-// The shortest decimal that reads back as x (1e-15, not toml++'s 1.0000000000000001e-15).
-std::string show_number(double x) {
-  char buf[64];
-  return std::string(buf, std::to_chars(buf, buf + sizeof buf, x).ptr);
-}
-
 // A TOML basic string: "..." with quotes, backslashes and control characters escaped.
 std::string basic_string(std::string_view text) {
   std::string out = "\"";
@@ -224,7 +220,7 @@ std::string show_key(std::string_view key) {
 // A float as TOML writes it: a whole number keeps its ".0" (1.0, not 1), so that a message about
 // a key that needs an integer shows why the value is not one.
 std::string show_float(double x) {
-  std::string out = show_number(x);
+  std::string out = shortest(x);
   if (out.find_first_of(".en") == std::string::npos) out += ".0";  // not 1e+20, nan, inf
   return out;
 }

@@ -19,8 +19,6 @@ constexpr std::size_t kShowLimit = 200;
 std::string printable(std::string_view key);
 // Text as typed, made printable and cut at kShowLimit characters.
 std::string cut(std::string_view text);
-// The shortest decimal that reads back as x.
-std::string show_number(double x);
 // A float as TOML writes it (1.0, 1e-15, nan).
 std::string show_float(double x);
 // A string value in TOML syntax.
