@@ -133,9 +133,9 @@ class ErrorObserver {
   double reference_seconds_ = 0;
 };
 
-template <class Stepper>
-ErrorNorms measure_errors(Stepper& stepper, const Model& model, const State& initial,
-                          const Grid& grid) {
+// S: a Stepper, or AnyStepper.
+template <class S>
+ErrorNorms measure_errors(S& stepper, const Model& model, const State& initial, const Grid& grid) {
   ErrorObserver errors(model, initial, grid);
   const RunSummary run = simulate(stepper, initial, grid, errors);
   return errors.result(run);

@@ -25,14 +25,15 @@
 #include "impact/force.hpp"
 #include "impact/model.hpp"
 #include "impact/registry.hpp"
+#include "impact/stepper.hpp"
 
 namespace impact {
 
 // Gives `stepper` the sink if it knows its events exactly (has set_event_sink); returns whether it
 // did, else the events are to be read off its steps with an EventLog.
-template <class Stepper>
-bool attach_event_sink(Stepper& stepper, const EventSink& sink) {
-  if constexpr (requires { stepper.set_event_sink(sink); }) {
+template <Stepper S>
+bool attach_event_sink(S& stepper, const EventSink& sink) {
+  if constexpr (EventSource<S>) {
     stepper.set_event_sink(sink);
     return true;
   } else {

@@ -1,15 +1,5 @@
-// The solvers by name. Adding a method: write its file (a class with the stepper interface below
-// and a plain parameter struct), add both to the variants here and a row to kMethods in
-// registry.cpp, and read its [method] keys in src/scene/method_keys.cpp.
-//
-// The stepper interface, in the spirit of Boost.Odeint's steppers:
-//   Stepper(const Model&, double h, const Params&);  // throws std::invalid_argument on bad params
-//   void initialize(const State& s, std::int64_t l); // (re)start at t_l = l h from s
-//   StepInfo do_step(State& s, std::int64_t l);      // s: the state at t_l that the stepper
-//                                                    // produced (or was initialized with);
-//                                                    // advanced to t_{l+1}
-// A stepper may carry state of its own between steps (direct's free-flight anchor, fb_newton's
-// gap, penalty's ODE driver); to start from any other state, call initialize() again.
+// The solvers by name: each method's parameters and stepper (the interface is stepper.hpp's
+// concept), its row in registry.cpp's table, and the factory.
 #pragma once
 
 #include <span>
@@ -23,6 +13,7 @@
 #include "impact/model.hpp"
 #include "impact/moreau_jean.hpp"
 #include "impact/penalty.hpp"
+#include "impact/stepper.hpp"
 
 namespace impact {
 
@@ -34,6 +25,9 @@ using MethodParams = std::variant<DirectParams, FbNewtonParams, MoreauJeanParams
 // with a time-dependent force (direct.hpp says why more than one type).
 using AnyStepper = std::variant<Direct, FbNewton, MoreauJean, Penalty, ExactStepper, EventDriven,
                                 DirectHarmonic, DirectTimeDependent, MoreauJeanTimeDependent>;
+static_assert([]<class... S>(std::variant<S...>*) { return (Stepper<S> && ...); }(
+                  static_cast<AnyStepper*>(nullptr)),
+              "every method's stepper has the interface of stepper.hpp");
 
 struct MethodInfo {
   std::string_view name;

@@ -109,9 +109,9 @@ using StepWatch = std::function<void(std::int64_t l, const State& s, const StepI
 // watch(l, s, info), out of line on copies.
 [[gnu::noinline]] void watch_step(const StepWatch& watch, std::int64_t l, State s, StepInfo info);
 
-template <class Stepper>
-RunSummary simulate_rows(Stepper& stepper, const State& initial, const Grid& grid,
-                         RowStream& stream, bool sums, const StepWatch& watch) {
+template <class S>
+RunSummary simulate_rows(S& stepper, const State& initial, const Grid& grid, RowStream& stream,
+                         bool sums, const StepWatch& watch) {
   const auto with = [&]<bool kSums>() {
     RowTap<kSums> tap(stream);
     if (!watch) return simulate(stepper, initial, grid, tap);

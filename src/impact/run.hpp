@@ -13,6 +13,7 @@
 
 #include "impact/model.hpp"
 #include "impact/registry.hpp"
+#include "impact/stepper.hpp"
 
 namespace impact {
 
@@ -42,20 +43,19 @@ struct RunSummary {
                                                                const std::string& detail);
 
 // The same with the stepper's own account of a solve that did not converge, for a stepper that
-// gives one (std::string failure_reason() const: which rule failed, the residual reached).
-template <class Stepper>
-[[noreturn, gnu::cold, gnu::noinline]] void throw_step_failure(const Stepper& stepper,
-                                                               std::int64_t l, double t, State s,
-                                                               StepInfo info) {
-  if constexpr (requires { stepper.failure_reason(); })
+// gives one (ExplainsFailure).
+template <class S>
+[[noreturn, gnu::cold, gnu::noinline]] void throw_step_failure(const S& stepper, std::int64_t l,
+                                                               double t, State s, StepInfo info) {
+  if constexpr (ExplainsFailure<S>)
     if (!info.converged) throw_step_failure(l, t, s, info, stepper.failure_reason());
   throw_step_failure(l, t, s, info);
 }
 
 namespace detail {
 
-template <class Stepper, class Observer>
-[[gnu::always_inline]] inline RunSummary step_loop(Stepper& stepper, const State& initial,
+template <Stepper S, class Observer>
+[[gnu::always_inline]] inline RunSummary step_loop(S& stepper, const State& initial,
                                                    const Grid& grid, Observer& observe) {
   RunSummary summary;
   State s = initial;
@@ -99,11 +99,11 @@ concept StepsLocally = std::remove_cvref_t<Observer>::kStepsLocally;
 //    that nothing on its common path takes the address of the loop's state;
 //  - an observer that updates running values of its own at every step and says so (StepsLocally)
 //    is stepped as a local copy too, copied back when the run ends, for the same reason.
-template <class Stepper, class Observer>
-[[gnu::noinline]] RunSummary simulate(Stepper& stepper, const State& initial, const Grid& grid,
+template <Stepper S, class Observer>
+[[gnu::noinline]] RunSummary simulate(S& stepper, const State& initial, const Grid& grid,
                                       Observer&& observe) {
-  if constexpr (std::is_move_constructible_v<Stepper> && std::is_move_assignable_v<Stepper>) {
-    Stepper local = std::move(stepper);
+  if constexpr (std::is_move_constructible_v<S> && std::is_move_assignable_v<S>) {
+    S local = std::move(stepper);
     RunSummary summary;
     if constexpr (StepsLocally<Observer>) {
       std::remove_cvref_t<Observer> watcher = observe;

@@ -1,0 +1,41 @@
+// The stepper interface, in the spirit of Boost.Odeint's steppers, as concepts:
+//   S(const Model&, double h, const Params&);      // throws std::invalid_argument on bad params
+//   void initialize(const State& s, std::int64_t l); // (re)start at t_l = l h from s
+//   StepInfo do_step(State& s, std::int64_t l);      // s: the state at t_l that the stepper
+//                                                    // produced (or was initialized with);
+//                                                    // advanced to t_{l+1}
+// A stepper may carry state of its own between steps (direct's free-flight anchor, fb_newton's
+// gap, penalty's ODE driver); to start from any other state, call initialize() again. Adding a
+// method: write its file (a stepper and a plain parameter struct), a row in registry.cpp, and its
+// [method] keys in src/scene/method_keys.cpp.
+#pragma once
+
+#include <concepts>
+#include <cstdint>
+#include <string>
+
+#include "impact/events.hpp"
+#include "impact/model.hpp"
+
+namespace impact {
+
+template <class S>
+concept Stepper = requires(S& stepper, State& s, const State& cs, std::int64_t l) {
+  stepper.initialize(cs, l);
+  { stepper.do_step(s, l) } -> std::same_as<StepInfo>;
+};
+
+// A stepper that knows its events exactly and reports them (exact, event_driven); the others' are
+// read off their steps (event_log.hpp).
+template <class S>
+concept EventSource = Stepper<S> && requires(S& stepper, const EventSink& sink) {
+  stepper.set_event_sink(sink);
+};
+
+// A stepper that can say why a solve did not converge (which rule failed, the residual reached).
+template <class S>
+concept ExplainsFailure = requires(const S& stepper) {
+  { stepper.failure_reason() } -> std::convertible_to<std::string>;
+};
+
+}  // namespace impact
