@@ -49,7 +49,7 @@ std::string bouncing_scene(const impact::MethodInfo& method) {
       "[initial]\nu0 = 0.05\nv0 = -1.0\n[force]\nf = -9.80665\n[time]\nT = 0.5\nh = 0.001\n"
       "[method]\nname = \"" +
       std::string(method.name) + "\"\n[output]\nchannels = [\"u\", \"v\", \"N\", \"E\"" +
-      (method.has_iterations ? ", \"iterations\"" : "") + "]\n";
+      (method.can.iterations_channel ? ", \"iterations\"" : "") + "]\n";
   if (method.name != "penalty") text += "[floor]\ncor = 0.75\n";
   return text;
 }

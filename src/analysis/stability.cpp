@@ -131,8 +131,7 @@ std::string_view outcome_name(Outcome outcome) {
 
 StabilityCheck check_stability(const Scene& scene, const StabilityOptions& options) {
   StabilityCheck check;
-  const std::string_view method = method_name(scene.method);
-  check.energy_bound = method == "direct" || method == "fb_newton" || method == "exact";
+  check.energy_bound = method_info(scene.method).can.energy_bound;
   std::optional<AnyStepper> stepper;
   try {
     stepper.emplace(make_stepper(scene));

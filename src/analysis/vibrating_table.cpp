@@ -19,6 +19,11 @@ const MethodParams& method_named(std::string_view name) {
   return find_method(name)->defaults;
 }
 
+// An exact solution (the reference), not a time-stepper.
+bool is_reference(std::string_view method) {
+  return find_method(method)->can.reference;
+}
+
 // What "repeats" means for a method's impacts (classify_table_run): to 1e-6 for exact; for a
 // time-stepper to 1.5 omega h: its contact lands on the grid, so an orbit of the continuous system
 // can alternate between two neighbouring contact steps; the impact's date (EventLog's crossing of
@@ -26,7 +31,7 @@ const MethodParams& method_named(std::string_view name) {
 // step that applies the impulse (4-4), by about e g h, i.e. e omega h in units of g / omega, and
 // the scheme's flight from a take-off a step later moves the next crossing by up to omega h.
 double repeat_tolerance(std::string_view method, double h) {
-  return method == "exact" ? 1e-6 : 1.5 * kTableOmega * h;
+  return is_reference(method) ? 1e-6 : 1.5 * kTableOmega * h;
 }
 
 // One continuation sweep of a diagram: the method, its step, e, and the direction.
@@ -63,7 +68,7 @@ std::string diagram_csv(const std::vector<DiagramSweep>& sweeps, bool exact) {
   std::ostringstream csv;
   csv << "method,h,e,sweep,gamma,kind,phase,speed\n";
   for (const DiagramSweep& s : sweeps)
-    if ((s.method == "exact") == exact)
+    if (is_reference(s.method) == exact)
       for (const SweepPoint& p : s.points)
         for (const TableEvent& event : p.events)
           csv << s.method << ',' << round_trip(s.h) << ',' << s.e << ',' << (s.up ? "up" : "down")
@@ -139,7 +144,7 @@ std::string trajectories_csv(const std::vector<DiagramSweep>& sweeps) {
   csv << "regime,e,gamma,t,u,v\n";
   for (const Regime& r : kTrajectoryRegimes)
     for (const DiagramSweep& s : sweeps) {
-      if (s.method != "exact" || s.up || s.e != r.e) continue;
+      if (!is_reference(s.method) || s.up || s.e != r.e) continue;
       for (const SweepPoint& p : s.points) {
         if (std::fabs(p.gamma - r.gamma) > 1e-9) continue;
         if (p.classification.regime != r.regime ||
@@ -206,7 +211,7 @@ std::string first_failure(const std::vector<DiagramSweep>& sweeps) {
 
 ThresholdSettings table_threshold_settings(std::string_view method, double h) {
   ThresholdSettings settings;
-  if (method == "exact") {
+  if (is_reference(method)) {
     settings.sweep.tolerance = 1e-4;
     return settings;
   }

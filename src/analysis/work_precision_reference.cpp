@@ -11,7 +11,7 @@
 namespace impact {
 
 std::string_view reference_method(const Model& model) {
-  return model.expression.empty() ? "exact" : "event_driven";
+  return reference_for(model).name;
 }
 
 std::int64_t count_impacts(const Scene& scene) {
@@ -24,12 +24,7 @@ std::int64_t count_impacts(const Scene& scene) {
 
 ReferenceTrajectory reference_trajectory(const Model& model, const State& initial,
                                          const Grid& grid) {
-  const std::string_view name = reference_method(model);
-  const MethodInfo* info = find_method(name);
-  if (!info)
-    throw std::runtime_error("the reference of a time-dependent force is method " +
-                             std::string(name) + ", which this build does not have");
-  AnyStepper stepper = make_stepper(model, grid.h, info->defaults);
+  AnyStepper stepper = make_stepper(model, grid.h, reference_for(model).defaults);
   ReferenceTrajectory reference;
   reference.states.reserve(static_cast<std::size_t>(grid.steps) + 1);
   attach_event_sink(stepper, [&reference](const Event& event) {

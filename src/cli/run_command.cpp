@@ -82,7 +82,7 @@ std::string summary_text(const Scene& scene, const RunReport& report) {
                 static_cast<long long>(report.summary.steps),
                 static_cast<long long>(report.summary.contact_steps));
   std::string text = line;
-  if (method.has_iterations) {
+  if (method.can.iterations_channel) {
     std::snprintf(line, sizeof line, ", %lld iterations (max %d per step)",
                   static_cast<long long>(report.summary.iterations), report.summary.max_iterations);
     text += line;

@@ -10,18 +10,46 @@ namespace {
 
 // In the order of the MethodParams alternatives, so that method_info() can index by them.
 const MethodInfo kMethods[] = {
-    {"direct", false, true, "the paper's scheme (4-1)-(4-3) solved in closed form, (5-1)",
-     DirectParams{}},
-    {"fb_newton", true, true,
-     "(4-1)-(4-3) as the smoothed Fischer-Burmeister equation (5-3), Newton", FbNewtonParams{}},
-    {"moreau_jean", false, true, "Moreau-Jean theta time-stepping with Newton's impact law",
-     MoreauJeanParams{}},
-    {"penalty", true, false, "normal compliance N = c_N max(phi - u, 0), GSL odeiv2",
-     PenaltyParams{}},
-    {"exact", false, true, "event-driven closed-form solution sampled on t = l h", ExactParams{}},
-    {"event_driven", false, true,
-     "event-driven solution for any f(t): GSL odeiv2 rk8pd between certified impacts",
-     EventDrivenParams{}},
+    {.name = "direct",
+     .summary = "the paper's scheme (4-1)-(4-3) solved in closed form, (5-1)",
+     .defaults = DirectParams{},
+     .can = {.restitution = true,
+             .harmonic_force = true,
+             .time_expression = true,
+             .energy_bound = true}},
+    {.name = "fb_newton",
+     .summary = "(4-1)-(4-3) as the smoothed Fischer-Burmeister equation (5-3), Newton",
+     .defaults = FbNewtonParams{},
+     .can = {.restitution = true,
+             .harmonic_force = true,
+             .time_expression = true,
+             .iterations_channel = true,
+             .energy_bound = true}},
+    {.name = "moreau_jean",
+     .summary = "Moreau-Jean theta time-stepping with Newton's impact law",
+     .defaults = MoreauJeanParams{},
+     .can = {.restitution = true, .harmonic_force = true, .time_expression = true}},
+    // Compliance has no impact law to apply a COR to: it refuses one rather than run elastic.
+    {.name = "penalty",
+     .summary = "normal compliance N = c_N max(phi - u, 0), GSL odeiv2",
+     .defaults = PenaltyParams{},
+     .can = {.harmonic_force = true, .time_expression = true, .iterations_channel = true}},
+    {.name = "exact",
+     .summary = "event-driven closed-form solution sampled on t = l h",
+     .defaults = ExactParams{},
+     .can = {.restitution = true,
+             .harmonic_force = true,
+             .reference = true,
+             .energy_bound = true,
+             .exact_events = true}},
+    {.name = "event_driven",
+     .summary = "event-driven solution for any f(t): GSL odeiv2 rk8pd between certified impacts",
+     .defaults = EventDrivenParams{},
+     .can = {.restitution = true,
+             .harmonic_force = true,
+             .time_expression = true,
+             .reference = true,
+             .exact_events = true}},
 };
 static_assert(std::size(kMethods) == std::variant_size_v<MethodParams>);
 
@@ -41,10 +69,29 @@ const MethodInfo& method_info(const MethodParams& params) {
   return kMethods[params.index()];
 }
 
+std::vector<std::string_view> methods_with(bool Capabilities::*capability) {
+  std::vector<std::string_view> names;
+  for (const auto& m : kMethods)
+    if (m.can.*capability) names.push_back(m.name);
+  return names;
+}
+
+bool honours(const MethodInfo& method, const Model& model) {
+  const bool harmonic = model.harmonic && model.harmonic->amplitude != 0.0;
+  return (!model.cor || method.can.restitution) && (!harmonic || method.can.harmonic_force) &&
+         (model.expression.empty() || method.can.time_expression);
+}
+
+const MethodInfo& reference_for(const Model& model) {
+  for (const auto& m : kMethods)
+    if (m.can.reference && honours(m, model)) return m;
+  throw std::logic_error("no reference method honours this model");
+}
+
 AnyStepper make_stepper(const Model& model, double h, const MethodParams& params) {
-  // Compliance has no impact law to apply a COR to: refuse rather than silently run elastic.
-  if (model.cor && !method_info(params).takes_cor)
-    throw std::invalid_argument("method '" + std::string(method_name(params)) +
+  const MethodInfo& method = method_info(params);
+  if (model.cor && !method.can.restitution)
+    throw std::invalid_argument("method '" + std::string(method.name) +
                                 "' has no restitution law: it cannot take a COR");
   if ((std::holds_alternative<DirectParams>(params) ||
        std::holds_alternative<FbNewtonParams>(params)) &&

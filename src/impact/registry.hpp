@@ -5,6 +5,7 @@
 #include <span>
 #include <string_view>
 #include <variant>
+#include <vector>
 
 #include "impact/direct.hpp"
 #include "impact/event_driven.hpp"
@@ -29,15 +30,35 @@ static_assert([]<class... S>(std::variant<S...>*) { return (Stepper<S> && ...); 
                   static_cast<AnyStepper*>(nullptr)),
               "every method's stepper has the interface of stepper.hpp");
 
+// What a method can honour and what it is: one table (registry.cpp) that the scene reader, the
+// help, the CLI and the analyses ask, instead of lists of names. A scene feature a method cannot
+// honour is refused (exit 2, naming the key), never ignored; a test runs every method against
+// every feature.
+struct Capabilities {
+  bool restitution = false;         // floor.cor: an impact law a COR acts on
+  bool harmonic_force = false;      // force.amplitude/omega/phase
+  bool time_expression = false;     // force.expression (a function of t)
+  bool iterations_channel = false;  // output.channels "iterations": Newton iterations, ODE steps
+  bool reference = false;     // samples an exact solution (--against's reference, tight tolerances)
+  bool energy_bound = false;  // the discrete energy (3-1) never rises (Lemma 1, (4-5), stability)
+  bool exact_events = false;  // reports its own events (EventSource), else read off its steps
+};
+
 struct MethodInfo {
   std::string_view name;
-  bool has_iterations;  // can write the "iterations" channel
-  bool takes_cor;       // has an impact law a COR can act on
   std::string_view summary;
   MethodParams defaults;
+  Capabilities can;
 };
 
 std::span<const MethodInfo> methods();
+// The names of the methods that have a capability, for messages ("direct, fb_newton or exact").
+std::vector<std::string_view> methods_with(bool Capabilities::*capability);
+// Whether `method` honours what `model` states (a COR, a harmonic part, an expression).
+bool honours(const MethodInfo& method, const Model& model);
+// The reference for a model: the first method with `reference` that honours it (exact for a
+// constant or harmonic force, event_driven for an expression).
+const MethodInfo& reference_for(const Model& model);
 // nullptr for an unknown name.
 const MethodInfo* find_method(std::string_view name);
 const MethodInfo& method_info(const MethodParams& params);
@@ -46,7 +67,7 @@ inline std::string_view method_name(const MethodParams& params) {
 }
 
 // The solver for one model and step; throws std::invalid_argument for parameters out of range
-// and for a COR given to a method without an impact law (penalty).
+// and for what the method does not honour (a COR given to penalty).
 AnyStepper make_stepper(const Model& model, double h, const MethodParams& params);
 
 }  // namespace impact

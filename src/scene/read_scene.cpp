@@ -38,14 +38,15 @@ void read_channels(const KeyReader& r, const toml::node& channels, const MethodI
   output.channels.clear();
   std::vector<std::string_view> allowed;
   for (auto name : find_scene_key("output", "channels")->choices())
-    if (name != channel_name(Channel::iterations) || method.has_iterations) allowed.push_back(name);
+    if (name != channel_name(Channel::iterations) || method.can.iterations_channel)
+      allowed.push_back(name);
   for (const toml::node& item : *list) {
     const toml::value<std::string>* s = item.as_string();
     bool ok = false;
     if (s) {
       for (Channel c : {Channel::u, Channel::v, Channel::N, Channel::E, Channel::iterations}) {
         if (channel_name(c) != s->get()) continue;
-        if (c == Channel::iterations && !method.has_iterations) break;
+        if (c == Channel::iterations && !method.can.iterations_channel) break;
         for (Channel seen : output.channels)
           if (seen == c)
             r.fail_value("output", "channels", item, "is listed twice (at most once each)");
@@ -110,14 +111,17 @@ Scene build(const toml::table& root, const Origins& origins) {
                  ", f(0) = " + shortest(ForceFunction(scene.model).at(0.0)) +
                  ", u0 = " + shortest(scene.initial.u) + ")");
   // Compliance has no impact law to apply a COR to: refuse rather than silently run elastic.
-  if (scene.model.cor && !method.takes_cor) {
+  if (scene.model.cor && !method.can.restitution) {
     const std::string& named = origins.of("method", "name");
+    std::vector<std::string_view> taking = methods_with(&Capabilities::restitution);
+    const std::string last(taking.back());
+    taking.pop_back();
     r.fail_value("floor", "cor", node_at(root, "floor", "cor"),
                  "method '" + std::string(method.name) + "'" +
                      (named == origins.of("floor", "cor") ? "" : " (" + named + ")") +
                      " has no restitution law (its compliance contact is elastic); remove "
-                     "floor.cor (--unset floor.cor) or choose direct, fb_newton, moreau_jean or "
-                     "exact");
+                     "floor.cor (--unset floor.cor) or choose " +
+                     join(taking) + " or " + last);
   }
   read_method_keys(r, *root.get("method")->as_table(), scene);
   return scene;

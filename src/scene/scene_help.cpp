@@ -145,7 +145,7 @@ std::string scene_help(std::size_t width) {
   out += "\nChannels (output.channels; the CSV's header is t, then the channels):\n";
   std::vector<std::string_view> counting;
   for (const MethodInfo& m : methods())
-    if (m.has_iterations) counting.push_back(m.name);
+    if (m.can.iterations_channel) counting.push_back(m.name);
   for (Channel c : {Channel::u, Channel::v, Channel::N, Channel::E, Channel::iterations}) {
     std::string meaning(channel_meaning(c));
     if (c == Channel::iterations) meaning += " (" + join(counting) + " only)";

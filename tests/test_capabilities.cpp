@@ -1,0 +1,91 @@
+// Every method against every scene feature it may be given: honoured (exit 0, and the rows differ
+// from the same scene without the feature, so a method that ignored it would be caught) or refused
+// (exit 2, naming the key), as the capability table says; and the table itself, row by row, so
+// that a changed capability shows as a changed line here.
+#include <catch2/catch.hpp>
+#include <string>
+#include <vector>
+
+#include "cli_support.hpp"
+#include "impact/registry.hpp"
+
+using Catch::Contains;
+using namespace impact::testing;
+
+namespace {
+
+struct Feature {
+  std::string name;
+  bool impact::Capabilities::*capability;
+  std::string with, without;  // the --set/--unset that give the scene the feature, or not
+  std::string refused_key;    // what a refusal names
+};
+
+const std::string kScene =
+    "[initial]\nu0 = 0.05\nv0 = -1.0\n[force]\nf = -9.80665\n[time]\nT = 0.2\nh = 1e-3\n"
+    "[method]\nname = \"direct\"\n";
+
+const std::vector<Feature> kFeatures = {
+    {"a COR", &impact::Capabilities::restitution, "--set floor.cor=0.5", "", "floor.cor"},
+    {"a harmonic force", &impact::Capabilities::harmonic_force,
+     "--set force.amplitude=5 --set force.omega=30", "", "force.amplitude"},
+    {"a force expression of t", &impact::Capabilities::time_expression,
+     "--unset force.f --set 'force.expression=\"-9.80665 + 5 * sin(30 * t)\"'",
+     "--unset force.f --set 'force.expression=\"-9.80665\"'", "force.expression"},
+    {"the iterations channel", &impact::Capabilities::iterations_channel,
+     "--set 'output.channels=[\"u\",\"v\",\"iterations\"]'", "", "output.channels"},
+};
+
+}  // namespace
+
+TEST_CASE("capabilities: every method honours or refuses every feature, as its table says",
+          "[capabilities][regression]") {
+  TempDir dir;
+  dir.write("s.toml", kScene);
+  for (const impact::MethodInfo& method : impact::methods())
+    for (const Feature& feature : kFeatures) {
+      const std::string run = "run s.toml -q --set method.name=" + std::string(method.name) + " ";
+      INFO(method.name << " with " << feature.name);
+      const Result with = dir.run(run + feature.with);
+      if (method.can.*feature.capability) {
+        INFO(with.err);
+        REQUIRE(with.code == 0);
+        const Result without = dir.run(run + feature.without);
+        REQUIRE(without.code == 0);
+        CHECK(with.out != without.out);
+      } else {
+        CHECK(with.code == 2);
+        CHECK_THAT(with.err, Contains(feature.refused_key));
+        CHECK(with.out.empty());
+      }
+    }
+}
+
+TEST_CASE("capabilities: the table", "[capabilities]") {
+  // Restitution, Harmonic force, Expression of t, Iterations channel, reFerence, energy Bound,
+  // exact eVents.
+  const std::vector<std::pair<std::string, std::string>> rows = {
+      {"direct", "RHE--B-"},  {"fb_newton", "RHEI-B-"}, {"moreau_jean", "RHE----"},
+      {"penalty", "-HEI---"}, {"exact", "RH--FBV"},     {"event_driven", "RHE-F-V"},
+  };
+  const auto row = [](const impact::Capabilities& c) {
+    std::string r;
+    r += c.restitution ? 'R' : '-';
+    r += c.harmonic_force ? 'H' : '-';
+    r += c.time_expression ? 'E' : '-';
+    r += c.iterations_channel ? 'I' : '-';
+    r += c.reference ? 'F' : '-';
+    r += c.energy_bound ? 'B' : '-';
+    r += c.exact_events ? 'V' : '-';
+    return r;
+  };
+  REQUIRE(impact::methods().size() == rows.size());
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    CHECK(impact::methods()[i].name == rows[i].first);
+    CHECK(row(impact::methods()[i].can) == rows[i].second);
+  }
+  CHECK(impact::reference_for(impact::Model{}).name == "exact");
+  impact::Model expression;
+  expression.expression = "-9.80665";
+  CHECK(impact::reference_for(expression).name == "event_driven");
+}
