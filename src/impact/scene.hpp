@@ -1,6 +1,6 @@
 // A scene: everything one run needs (initial data, floor, force, time grid, method, output), as
 // plain values. The scene reader (src/scene/) fills one from a TOML file; code can build one
-// directly.
+// directly (make_scene).
 #pragma once
 
 #include <cstdint>
@@ -15,18 +15,32 @@ namespace impact {
 enum class Channel { u, v, N, E, iterations };
 std::string_view channel_name(Channel c);
 
-struct OutputSpec {
-  std::vector<Channel> channels{Channel::u, Channel::v};
-  std::int64_t every = 1;  // write every k-th step; t = 0 and the last step always
+// A scene is three plain parts, as in DifferentialEquations.jl's problem / algorithm / solve and
+// Siconos's dynamical system + law / integrator: what the solution is of, how it is computed, and
+// what a run writes of it. Code that needs one part takes that part (a Scene is each of them).
+
+// The physics and its data: the model (floor, force, contact law) from an initial state over [0,
+// T].
+struct Problem {
+  Model model;
+  State initial;
+  double T = 0.0;
 };
 
-struct Scene {
-  State initial;
-  Model model;
-  double T = 0.0;
-  Grid grid;  // Grid::covering(T, h)
+// How it is solved: the method with its keys, on the grid t = l h (Grid::covering(T, h)).
+struct Algorithm {
   MethodParams method;
-  OutputSpec output;
+  Grid grid;
+};
+
+// What a run writes: the channels of its rows, every k-th step (t = 0 and the last step always).
+struct Output {
+  std::vector<Channel> channels{Channel::u, Channel::v};
+  std::int64_t every = 1;
+};
+
+struct Scene : Problem, Algorithm {
+  Output output;
 };
 
 // A scene with the given data and the default output; the grid covers [0, T] by Grid::covering.

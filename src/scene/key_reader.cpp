@@ -5,6 +5,7 @@
 #include "scene/scene_error.hpp"
 #include "scene/suggest.hpp"
 #include "scene/toml_text.hpp"
+#include "scene/validate.hpp"
 
 namespace impact {
 namespace {
@@ -94,20 +95,14 @@ KeyValue KeyReader::value(const KeySpec& spec, const toml::node& node) const {
         x = f->get();
       else
         fail_value(spec.table, spec.key, node, "must be a number");
-      if (!std::isfinite(x)) {  // nan and inf are TOML numbers, but not a scene's
-        std::string allowed = "must be a finite number";
-        if (const std::string range = spec.range.text(); !range.empty())
-          allowed.append(" ") += range;
-        fail_value(spec.table, spec.key, node, allowed);
-      }
-      if (!spec.range.contains(x))
-        fail_value(spec.table, spec.key, node, "must be " + spec.range.text());
+      if (const auto wrong = check_value(spec, x)) fail_value(spec.table, spec.key, node, *wrong);
       return x;
     }
     case KeyType::integer: {
       const auto* i = node.as_integer();
-      if (!i || !spec.range.contains(static_cast<double>(i->get())))
-        fail_value(spec.table, spec.key, node, "must be an integer " + spec.range.text());
+      if (!i) fail_value(spec.table, spec.key, node, "must be an integer " + spec.range.text());
+      if (const auto wrong = check_value(spec, static_cast<double>(i->get())))
+        fail_value(spec.table, spec.key, node, *wrong);
       return i->get();
     }
     case KeyType::name: {

@@ -23,6 +23,7 @@
 #include "scene/scene_keys.hpp"
 #include "scene/suggest.hpp"
 #include "scene/toml_text.hpp"
+#include "scene/validate.hpp"
 
 namespace impact {
 namespace {
@@ -31,7 +32,7 @@ namespace {
 constexpr std::size_t kMaxSceneBytes = std::size_t{1} << 20;
 
 void read_channels(const KeyReader& r, const toml::node& channels, const MethodInfo& method,
-                   OutputSpec& output) {
+                   Output& output) {
   const toml::array* list = channels.as_array();
   if (!list || list->empty())
     r.fail_value("output", "channels", channels, "must be a non-empty array of channel names");
@@ -85,31 +86,19 @@ Scene build(const toml::table& root, const Origins& origins) {
   }
 
   check_force(r, root, scene);
-  if (scene.initial.u < scene.model.phi)
-    r.fail_value("initial", "u0", node_at(root, "initial", "u0"),
-                 "must be >= floor.phi = " + shortest(scene.model.phi) +
-                     " (the particle starts above the floor)");
-  const double h = scene.grid.h;
-  if (h > scene.T)
-    r.fail_value("time", "h", node_at(root, "time", "h"),
-                 "must be <= time.T = " + show(node_at(root, "time", "T")));
-  const double ratio = scene.T / h;
-  if (!(ratio <= kMaxGridSteps))
-    r.fail_value("time", "h", node_at(root, "time", "h"),
-                 "T/h = " + shortest(ratio) +
-                     " steps is too many to count exactly (at most 2^53 = 9007199254740992)");
-  scene.grid = Grid::covering(scene.T, h);
-
   const MethodInfo& method = method_info(scene.method);
   if (const toml::node* channels = root.at_path("output.channels").node())
     read_channels(r, *channels, method, scene.output);
-  for (Channel c : scene.output.channels)
-    if (c == Channel::E && !std::isfinite(initial_energy(scene.model, scene.initial)))
-      r.fail("output", "channels",
-             "E: the initial energy v0^2/2 - f(0) u0 (3-1) is beyond the double range (v0 = " +
-                 shortest(scene.initial.v) +
-                 ", f(0) = " + shortest(ForceFunction(scene.model).at(0.0)) +
-                 ", u0 = " + shortest(scene.initial.u) + ")");
+  const ShowKey as_typed = [&](std::string_view table, std::string_view key) {
+    return show(node_at(root, table, key));
+  };
+  if (const auto issue = cross_check(scene, as_typed)) {
+    if (issue->with_value)
+      r.fail_value(issue->table, issue->key, node_at(root, issue->table, issue->key), issue->what);
+    r.fail(issue->table, issue->key, issue->what);
+  }
+  scene.grid = Grid::covering(scene.T, scene.grid.h);
+
   // Compliance has no impact law to apply a COR to: refuse rather than silently run elastic.
   if (scene.model.cor && !method.can.restitution) {
     const std::string& named = origins.of("method", "name");

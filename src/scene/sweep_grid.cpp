@@ -1,19 +1,16 @@
 #include "scene/sweep_grid.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <charconv>
 #include <cmath>
-#include <limits>
 #include <optional>
 #include <stdexcept>
 
 #include "impact/format.hpp"
-#include "impact/output.hpp"
-#include "impact/work_energy.hpp"
 #include "scene/read_scene.hpp"
 #include "scene/scene_keys.hpp"
 #include "scene/toml_text.hpp"
+#include "scene/validate.hpp"
 
 namespace impact {
 namespace {
@@ -139,26 +136,6 @@ const KeySpec* numeric_spec(const std::string& name, std::string_view method) {
   return nullptr;
 }
 
-bool same_bits(double a, double b) {
-  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
-}
-
-// Two scenes are the same run: every number bit for bit, and the rest.
-bool same_scene(const Scene& a, const Scene& b) {
-  const Model &x = a.model, &y = b.model;
-  const bool same_harmonic =
-      x.harmonic.has_value() == y.harmonic.has_value() &&
-      (!x.harmonic || (same_bits(x.harmonic->amplitude, y.harmonic->amplitude) &&
-                       same_bits(x.harmonic->omega, y.harmonic->omega) &&
-                       same_bits(x.harmonic->phase, y.harmonic->phase)));
-  return same_bits(a.initial.u, b.initial.u) && same_bits(a.initial.v, b.initial.v) &&
-         same_bits(x.phi, y.phi) && same_bits(x.f, y.f) && x.cor.has_value() == y.cor.has_value() &&
-         (!x.cor || same_bits(*x.cor, *y.cor)) && same_harmonic && x.expression == y.expression &&
-         same_bits(a.T, b.T) && same_bits(a.grid.h, b.grid.h) && a.grid.steps == b.grid.steps &&
-         a.method == b.method && a.output.channels == b.output.channels &&
-         a.output.every == b.output.every;
-}
-
 }  // namespace
 
 std::vector<std::string> sweep_keys() {
@@ -206,25 +183,43 @@ SweepGrid::SweepGrid(const std::string& scene_path, const std::vector<std::strin
       throw std::logic_error("--vary " + axis.key() + ": the reader took a key it has not");
     keys_.push_back(spec);
   }
-  // The scene reader's checks are of two kinds. Those of one key (a number, finite, in the key's
-  // range, an integer where one is needed) ask the same of every value on an axis whatever the
-  // other keys are; every range a scene reader checks is an interval, so the smallest and the
-  // largest value of an axis pass if and only if every value between them does, except that an
-  // integer key (method.max_iterations) must also be whole: its every value is read. These points
-  // go through the reader (with the other axes at their first values, so that each is a real point
-  // whose failure is a failure of the sweep), and their scenes must equal what apply() builds.
-  // The checks that involve two keys or more (u0 >= phi, h <= T, T/h <= 2^53, a finite initial
-  // energy with channel E) are the only others the reader makes; check_cross_keys() repeats them,
-  // in the reader's order and with its comparisons, on every point's plain values.
-  for (std::size_t k = 0; k < axes_.size(); ++k) {
-    if (keys_[k]->type == KeyType::integer)
-      for (std::int64_t j = 1; j < axes_[k].size(); ++j) check_with_reader(j * strides_[k]);
-    else
-      for (std::int64_t j : {axes_[k].smallest(), axes_[k].largest()})
-        if (j != 0) check_with_reader(j * strides_[k]);
-  }
+  // The scene reader's checks on plain values (validate.hpp), the same functions the reader calls:
+  // every value of every axis against its key's range (a point with the other axes at their first
+  // values names it), then what joins keys, at every point.
+  for (std::size_t k = 0; k < axes_.size(); ++k)
+    for (std::int64_t j = 0; j < axes_[k].size(); ++j)
+      if (const auto wrong = check_value(*keys_[k], axes_[k].value(j)))
+        fail(j * strides_[k], keys_[k]->table, keys_[k]->key, *wrong, true);
   Scene scene = base_;
-  for (std::int64_t i = 0; i < size_; ++i) check_cross_keys(i, scene);
+  for (std::int64_t i = 0; i < size_; ++i) {
+    set_values(i, scene);
+    const ShowKey shortest_value = [&](std::string_view, std::string_view) {
+      return shortest(scene.T);  // the one other key a check shows
+    };
+    if (const auto issue = cross_check(scene, shortest_value))
+      fail(i, issue->table, issue->key, issue->what, issue->with_value);
+  }
+}
+
+void SweepGrid::fail(std::int64_t i, std::string_view table, std::string_view key,
+                     const std::string& what, bool with_value) const {
+  const std::string name = std::string(table) + "." + std::string(key);
+  // Where the value came from: this point's --vary, else the last --set of the key, else the file.
+  std::string origin = path_, value;
+  for (const std::string& set : overrides_)
+    if (set.starts_with(name + "=")) origin = "--set " + set;
+  for (std::size_t k = 0; k < axes_.size(); ++k)
+    if (axes_[k].key() == name) {
+      value = axes_[k].text(index(i, k));
+      origin = "--set " + name + "=" + value;
+    }
+  if (value.empty() && with_value) {
+    Scene scene = base_;
+    set_values(i, scene);
+    value = show_float(name == "initial.u0" ? scene.initial.u : scene.grid.h);
+  }
+  throw SceneError(describe(i) + ": " + origin + ": " + name + (with_value ? " = " + value : "") +
+                   ": " + what);
 }
 
 std::int64_t SweepGrid::shared_grid_run() const {
@@ -260,42 +255,6 @@ std::string SweepGrid::describe(std::int64_t i) const {
   const auto sets = overrides(i);
   for (std::size_t k = 0; k < sets.size(); ++k) text += (k ? ", " : "") + sets[k];
   return text + ")";
-}
-
-void SweepGrid::check_with_reader(std::int64_t i) const {
-  std::vector<std::string> all = overrides_;
-  for (const std::string& o : overrides(i)) all.push_back(o);
-  Scene read;
-  try {
-    read = load_run(path_, all).scene;
-  } catch (const SceneError& e) {
-    throw SceneError(describe(i) + ": " + e.what());
-  }
-  Scene built = base_;
-  apply(i, built);
-  if (!same_scene(read, built))
-    throw std::logic_error(describe(i) + ": the sweep builds another scene than the reader reads");
-}
-
-void SweepGrid::check_cross_keys(std::int64_t i, Scene& scene) const {
-  set_values(i, scene);
-  const auto fail = [&](const std::string& what) {
-    throw SceneError(describe(i) + ": " + path_ + ": " + what);
-  };
-  const double u0 = scene.initial.u, phi = scene.model.phi, T = scene.T, h = scene.grid.h;
-  if (u0 < phi)
-    fail("initial.u0 = " + shortest(u0) + ": must be >= floor.phi = " + shortest(phi) +
-         " (the particle starts above the floor)");
-  if (h > T) fail("time.h = " + shortest(h) + ": must be <= time.T = " + shortest(T));
-  if (!(T / h <= kMaxGridSteps))
-    fail("time.h = " + shortest(h) + ": T/h = " + shortest(T / h) +
-         " steps is too many to count exactly (at most 2^53 = 9007199254740992)");
-  const auto& channels = scene.output.channels;
-  if (std::find(channels.begin(), channels.end(), Channel::E) != channels.end() &&
-      !std::isfinite(initial_energy(scene.model, scene.initial)))
-    fail(
-        "output.channels: E: the initial energy v0^2/2 - f(0) u0 (3-1) is beyond the double "
-        "range");
 }
 
 }  // namespace impact

@@ -78,8 +78,9 @@ class SweepGrid {
 
  private:
   void set_values(std::int64_t i, Scene& scene) const;
-  void check_with_reader(std::int64_t i) const;
-  void check_cross_keys(std::int64_t i, Scene& scene) const;
+  // Throws the SceneError of point i's table.key: what is wrong, where the value came from.
+  [[noreturn]] void fail(std::int64_t i, std::string_view table, std::string_view key,
+                         const std::string& what, bool with_value) const;
 
   std::string path_;
   std::vector<std::string> overrides_;
