@@ -185,7 +185,8 @@ TEST_CASE(
 
 TEST_CASE(
     "C10: Figure 4's rest time is decided by rounding: (5-1) in closed form rests at 5.801 s "
-    "and never at >= 7.5 s over 401 data within 200 ulps; as printed at 6.998 s, and 97 of "
+    "and never at >= 7.5 s over 401 data within 200 ulps, while as printed it rests at 6.998 s, "
+    "and 97 of "
     "the 401 at >= 7.5 s",
     "[figure4][claim]") {
   // The same discrete solution (free_flight.hpp) evaluated two ways: from the last contact in
@@ -219,7 +220,7 @@ TEST_CASE(
 
 TEST_CASE(
     "C12 (holds by construction of our COR reading): with COR = 0.75 at h = 1e-3 v := -COR v^l "
-    "rests at 6.939 s near the Zeno time 7.0026 s; scaling the scheme's own rebound, "
+    "rests at 6.939 s near the Zeno time 7.0026 s, while scaling the scheme's own rebound, "
     "v := COR v_scheme, rests at 2.854 s",
     "[figure4][claim]") {
   // restitution.md reads "alter the velocity" as v^{l+1} = -COR v^l on a step with N^l > 0. The
