@@ -207,8 +207,9 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "C55: Lemma 1 with f(t): s L E(s) = E(0) fails for E = v^2/2 - f(t) u of an elastic motion, "
-    "and E can grow with COR < 1, while the work-corrected W is kept, and only falls at impacts",
+    "C55 (beyond the paper): Lemma 1 with f(t): s L E(s) = E(0) fails for E = v^2/2 - f(t) u of "
+    "an elastic motion, and E can grow with COR < 1, while the work-corrected W is kept, and only "
+    "falls at impacts",
     "[claim][lemma3_forcing]") {
   // The exact elastic solution sampled at h = 1e-3 (energy_forcing.hpp). With a constant force
   // (a = 0) E is conserved and the check is round-off. W's samples carry the error of the work sum
