@@ -3,6 +3,8 @@
 // this test fails when the committed file is not what the generator writes, so it cannot go stale.
 #include <catch2/catch.hpp>
 #include <cstdlib>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 namespace {
@@ -38,4 +40,25 @@ TEST_CASE("ledger: a verdict outside the vocabulary or a missing key is an error
                         .c_str()) == 0);
   CHECK(claims_tool("markdown '" + bad + "' experiments") != 0);
   CHECK(claims_tool("markdown '" + missing + "' experiments") != 0);
+}
+
+TEST_CASE(
+    "ledger: 'beyond the paper' is a verdict with a row in the tally, and a key may index an array",
+    "[ledger]") {
+  const std::string dir = std::string(IMPACT_BUILD_DIR) + "/tests";
+  const std::string source = dir + "/claims_beyond.md", out = dir + "/claims_beyond_out.md";
+  const std::string row =
+      "| C1 | x | y | f / test_f | "
+      "`vibrating_table:vibrating_table.e_0_5.direct.branch_crossing_shift[1]` | "
+      "beyond the paper: z |\n";
+  CHECK(std::system(("printf '%s' '# t\n| id | a | b | c | d | e |\n| --- | --- | --- | --- | --- "
+                     "| --- |\n" +
+                     row + "' > '" + source + "'")
+                        .c_str()) == 0);
+  REQUIRE(claims_tool("markdown '" + source + "' experiments '" + out + "'") == 0);
+  std::ifstream in(out);
+  const std::string text{std::istreambuf_iterator<char>(in), {}};
+  CHECK(text.find("| beyond the paper (1) | C1 |") != std::string::npos);
+  CHECK(text.find("**0.02603**") != std::string::npos);  // the second of the four shifts
+  CHECK(text.find("| **beyond the paper**: z |") != std::string::npos);
 }

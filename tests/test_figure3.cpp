@@ -103,8 +103,8 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "Figure 3 right: with COR the impulse identity (4-9) fails: the scheme's impulse is not "
-    "the velocity jump (1 + COR) |v|",
+    "C9: the N kept with COR is not the motion's contact force: its impulse is 2 |v| = 2 where "
+    "the velocity jumps by (1 + COR) |v| = 1.75, so (4-9) fails with COR",
     "[figure3][claim]") {
   // (4-9): h sum N^l = v^n - v^0 (f = 0). Without COR it holds (2 = 2); with COR the velocity
   // (4-2) is replaced, so the impulse is whatever the complementarity solve gave: 2 |v| at

@@ -270,7 +270,7 @@ TEST_CASE("The grid phasor is within its error bound of cos and sin of omega t_l
 }
 
 TEST_CASE(
-    "The ensemble refuses a time-dependent force; the sweep summary does not call it constant",
+    "The ensemble refuses a time-dependent force and the sweep summary does not call it constant",
     "[forcing][regression]") {
   const Model model = table_model();
   const std::vector<Model> models{Model{}, model};

@@ -11,6 +11,8 @@
 #include "analysis/energy_forcing.hpp"
 #include "analysis/lemma1.hpp"
 #include "analysis/lemma3_forcing.hpp"
+#include "impact/event_track.hpp"
+#include "impact/force.hpp"
 
 using namespace impact;
 
@@ -34,6 +36,24 @@ std::size_t index_of(ForceReading reading) {
 
 const ForcingStats& velocity(ForceReading r) {
   return summary().velocity[index_of(r)];
+}
+
+// The exact solution (EventTrack) with its events and the smallest contact impulse of a step of h.
+struct TrackedRun {
+  std::vector<Event> events;
+  double min_step_impulse = 0;
+};
+TrackedRun track(const Model& model, const State& initial, double T, double h) {
+  EventTrack exact(model, initial, 0.0);
+  TrackedRun run;
+  exact.set_event_sink([&](const Event& e) { run.events.push_back(e); });
+  const Grid grid = Grid::covering(T, h);
+  for (std::int64_t l = 1; l <= grid.steps; ++l) {
+    double impulse = 0;
+    exact.advance(grid.t(l), impulse);
+    run.min_step_impulse = std::fmin(run.min_step_impulse, impulse);
+  }
+  return run;
 }
 
 }  // namespace
@@ -96,6 +116,35 @@ TEST_CASE(
   // ratio is at most its ratio to P.
   for (const ForcingRun& run : sweep())
     CHECK(run.readings[index_of(ForceReading::mean)].velocity <= run.proof_velocity);
+
+  // The sup reading recomputed without force_norms: |f| sampled at 2^16 + 1 points of [0, T], ends
+  // included. Inside, |f| peaks where f' = 0, so the samples miss the sup by at most
+  // max|f''| d^2 / 8 = |a| omega^2 d^2 / 8 (d the spacing); V(F) then follows from bounds.hpp.
+  constexpr int kSamples = 1 << 16;
+  double worst_sup = 0, worst_ratio = 0;
+  for (const ForcingRun& run : sweep()) {
+    const ForceFunction force(run.c.model());
+    const double d = run.T / kSamples;
+    double sampled = 0;
+    for (int i = 0; i <= kSamples; ++i) sampled = std::fmax(sampled, std::fabs(force.at(i * d)));
+    const double miss = std::fabs(run.c.amplitude) * run.c.omega * run.c.omega * d * d / 8;
+    INFO("f = " << run.c.f << ", a = " << run.c.amplitude << ", omega = " << run.c.omega);
+    CHECK(run.norms.sup >= sampled * (1 - 1e-15));
+    CHECK(run.norms.sup <= sampled + miss);
+    const double f0 = force.at(0.0);
+    const Lemma3Bounds b =
+        lemma3_bounds(sampled, f0 < 0 ? -sampled : sampled, State{run.c.u0, run.c.v0}, run.T);
+    const double ratio = run.readings[index_of(ForceReading::sup)].velocity;
+    // d ln V / dF <= T/2 + 1/F (bounds.hpp's V, with 2 E^0 + 2 F |u^0| >= 0): the sampled F, low
+    // by at most `miss`, raises the ratio by at most (T/2 + 1/F) miss relative.
+    CHECK(ratio <= run.max_v / b.velocity);
+    CHECK(ratio >= run.max_v / b.velocity * (1 - (run.T / 2 + 1 / sampled) * miss - 1e-12));
+    worst_sup = std::fmax(worst_sup, run.max_v / b.velocity);
+    worst_ratio = std::fmax(worst_ratio, ratio);
+  }
+  // The largest ratio the ledger cites (velocity_bound.sup.max_ratio), from the sampled sup.
+  CHECK(velocity(ForceReading::sup).max == worst_ratio);
+  CHECK(worst_ratio == Approx(worst_sup).epsilon(1e-6));
 }
 
 TEST_CASE(
@@ -158,8 +207,9 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "C55: Lemma 1 with f(t): s L E(s) = E(0) fails for E = v^2/2 - f(t) u of an elastic motion, "
-    "and E can grow with COR < 1; the work-corrected W is kept, and only falls at impacts",
+    "C55 (beyond the paper): Lemma 1 with f(t): s L E(s) = E(0) fails for E = v^2/2 - f(t) u of "
+    "an elastic motion, and E can grow with COR < 1, while the work-corrected W is kept, and only "
+    "falls at impacts",
     "[claim][lemma3_forcing]") {
   // The exact elastic solution sampled at h = 1e-3 (energy_forcing.hpp). With a constant force
   // (a = 0) E is conserved and the check is round-off. W's samples carry the error of the work sum
@@ -191,6 +241,41 @@ TEST_CASE(
   CHECK(driven.energy_final_change > 1);
   CHECK(driven.work_final_change < 0);
   CHECK(driven.work_max_rise < 1e-5);
+  // COR = 0, the plastic end of "0 <= COR < 1": the particle sticks after each landing and the
+  // force lifts it off again every period; W falls at the landings only.
+  const Lemma1Forcing plastic =
+      lemma1_forcing(30.0, 10.0, 0.0, ExactParams{}, kLemma1S, kLemma1DrivenT);
+  INFO("exact, COR 0, a = 30: E change " << plastic.energy_final_change << ", W change "
+                                         << plastic.work_final_change);
+  CHECK(plastic.work_final_change < 0);
+  CHECK(plastic.work_max_rise < 1e-5);
+  // And that plastic motion solves (2-1)-(2-4): N >= 0 (2-2) at every step, a rest only while
+  // f <= 0 (N = -f), a lift-off where f crosses 0 upward (asin in closed form, to a few ulp of
+  // omega t: |f| <= |a| omega 8 eps t there). Started on the floor moving down at a phase where
+  // f(0) = 0.5 > 0, the plastic impact at 0+ must let the particle go at once.
+  Model model;
+  model.f = -9.80665;
+  model.cor = 0.0;
+  model.harmonic = Harmonic{30.0, 10.0, std::asin((9.80665 + 0.5) / 30.0)};
+  const ForceFunction force(model);
+  REQUIRE(force.at(0.0) == Approx(0.5).epsilon(1e-12));
+  const TrackedRun run = track(model, State{0.0, -1.0}, kLemma1DrivenT, kLemma1ForcingH);
+  CHECK(run.min_step_impulse >= 0.0);
+  int sticks = 0, lifts = 0;
+  for (const Event& e : run.events) {
+    INFO(event_name(e.kind) << " at t = " << e.t << ", f = " << force.at(e.t));
+    if (e.kind == EventKind::stick) {
+      ++sticks;
+      CHECK(force.at(e.t) <= 0.0);
+    }
+    if (e.kind == EventKind::lift) {
+      ++lifts;
+      CHECK(std::fabs(force.at(e.t)) <= 30.0 * 10.0 * 8 * 2.2e-16 * e.t);
+      CHECK(std::cos(10.0 * e.t + model.harmonic->phase) > 0.0);  // f rising
+    }
+  }
+  CHECK(sticks >= 5);
+  CHECK(lifts >= 5);
 
   // The direct scheme with COR = 1 loses O(h) of the energy at each impact, so even with a = 0 the
   // check deviates, by 1.6e-3; against that scale E with f(t) deviates tens of times more, W not.

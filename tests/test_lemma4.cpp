@@ -140,8 +140,8 @@ TEST_CASE("C26: Lemma 4 with COR = 1: exact solutions depend Lipschitz-continuou
 }
 
 TEST_CASE(
-    "C29: Lemma 4 needs COR = 1: the exact solutions with COR 1 and 1/2 both satisfy (2-1)-(2-4) "
-    "weakly from the same data and differ",
+    "C29: as the paper says, uniqueness needs an impact law: the exact solutions with COR 1 and "
+    "1/2 both satisfy (2-1)-(2-4) weakly from the same data and end 2.5 m apart",
     "[claim][lemma4]") {
   const SolutionPair& pair = pair_named("cor");
   const ExactSolution u(pair.model_u, pair.u0), w(pair.model_w, pair.w0);

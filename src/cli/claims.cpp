@@ -6,8 +6,9 @@
 //   markdown SOURCE REFERENCES [OUT]      writes paper_notes/claims.md: the same ledger with the
 //                                         committed numbers in place of the keys, and a tally;
 //   check SOURCE REFERENCES COMMITTED     exits 1 when COMMITTED is not what `markdown` writes.
-// A row's verdict must start with one of the five verdicts of `kVerdicts`; a row that does not, or
-// that cites a key the references lack, or names no test, is an error (exit 1, naming the row).
+// A row's verdict must start with one of the six verdicts of `kVerdicts`; a row that does not, or
+// that cites a key the references lack, or names no test, is an error (exit 1, naming the row). A
+// key may end in an array index, `experiment:table.key[2]`.
 #include <toml++/toml.h>
 
 #include <array>
@@ -26,11 +27,17 @@
 
 namespace {
 
-// The fixed vocabulary, longest first where one is a prefix of another.
-constexpr std::array<const char*, 5> kVerdicts = {"reproduced under a stated condition",
-                                                  "holds by construction", "not reproduced",
-                                                  "error in the paper", "reproduced"};
-constexpr std::array<std::size_t, 5> kTallyOrder = {4, 0, 1, 2, 3};  // reading order of the tally
+// The fixed vocabulary, longest first where one is a prefix of another. "beyond the paper": a
+// question the paper does not treat, or one of its statements carried past the hypotheses the
+// paper states for it; measured, but neither for nor against the paper.
+constexpr std::array<const char*, 6> kVerdicts = {"reproduced under a stated condition",
+                                                  "holds by construction",
+                                                  "not reproduced",
+                                                  "error in the paper",
+                                                  "beyond the paper",
+                                                  "reproduced"};
+constexpr std::array<std::size_t, 6> kTallyOrder = {5, 0, 1,
+                                                    2, 3, 4};  // reading order of the tally
 
 struct Row {
   std::vector<std::string> cells;  // id | where | claim | experiment / test | measured | verdict
@@ -91,7 +98,7 @@ Row parse_row(const std::string& line) {
   if (k == kVerdicts.size())
     throw Error(id + ": the verdict \"" + verdict.substr(0, 40) +
                 "...\" does not start with reproduced / reproduced under a stated condition / "
-                "holds by construction / not reproduced / error in the paper");
+                "holds by construction / not reproduced / error in the paper / beyond the paper");
   if (row.cells[3].find("test_") == std::string::npos)
     throw Error(id + ": the experiment / test cell names no test (test_<file>)");
   row.verdict = k;
@@ -160,7 +167,7 @@ class Numbers {
 };
 
 const std::regex& reference_pattern() {
-  static const std::regex pattern("`([A-Za-z0-9_]+):([A-Za-z0-9_.\\-]+)`");
+  static const std::regex pattern("`([A-Za-z0-9_]+):([A-Za-z0-9_.\\-]+(?:\\[[0-9]+\\])?)`");
   return pattern;
 }
 
