@@ -92,7 +92,7 @@ TEST_CASE("provenance: impact run writes OUT.json beside the rows, with what mad
     CHECK(dir.shell("python3 -c 'import json,sys; json.load(open(\"X.csv.json\"))'").code == 0);
 }
 
-TEST_CASE("provenance: a sweep's sidecar; none for standard output; --no-provenance",
+TEST_CASE("provenance: a sweep's sidecar, none for standard output or with --no-provenance",
           "[provenance][cli]") {
   TempDir dir;
   dir.write("s.toml", kShort);
