@@ -137,6 +137,6 @@ TEST_CASE("help: run --help lists every key with its default and range, from the
   for (char c : r.out)
     if (!std::isspace(static_cast<unsigned char>(c)) || (!flat.empty() && flat.back() != ' '))
       flat += std::isspace(static_cast<unsigned char>(c)) ? ' ' : c;
-  CHECK_THAT(flat, Contains("iterations Newton or ODE-driver iterations of the step (fb_newton, "
-                            "penalty only)"));
+  CHECK_THAT(flat, Contains("iterations Newton or ODE-driver iterations of the steps since the "
+                            "previous row (fb_newton, penalty only)"));
 }

@@ -12,6 +12,7 @@
 
 #include "cli_support.hpp"
 #include "impact/output.hpp"
+#include "impact/run_scene.hpp"
 #include "impact/summary.hpp"
 #include "scene/read_scene.hpp"
 

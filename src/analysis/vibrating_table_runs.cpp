@@ -7,9 +7,9 @@
 #include <string>
 
 #include "analysis/vibrating_table_theory.hpp"
-#include "impact/event_log.hpp"
 #include "impact/output.hpp"
 #include "impact/run.hpp"
+#include "impact/run_scene.hpp"
 
 namespace impact {
 
@@ -59,18 +59,15 @@ TableRun run_table(const TableScene& scene, const MethodParams& method, double h
                    int transient, std::size_t max_events) {
   TableRun run;
   const EventCollector collect{&scene, transient * scene.period(), max_events, &run};
-  const Grid grid = Grid::covering(periods * scene.period(), h);
-  const Model model = table_model(scene);
-  AnyStepper any = make_stepper(model, h, method);
-  const EventSink sink = [&](const Event& event) { collect(event.t, event.kind, event.v_after); };
+  const Scene table =
+      make_scene(table_model(scene), scene.initial, periods * scene.period(), h, method);
+  AnyStepper any = make_stepper(table);
+  // The events of `impact run --events`: a time-stepper's read off its steps by its rules.
+  RunOutputs outputs;
+  outputs.events = [&](const Event& event) { collect(event.t, event.kind, event.v_after); };
+  outputs.watch = [&](std::int64_t, const State& s, const StepInfo&) { run.final_state = s; };
   try {
-    // A time-stepper's events are read off its steps by the rules of `impact run --events`.
-    std::optional<EventLog> log;
-    if (!attach_event_sink(any, sink)) log.emplace(model, h, sink);
-    simulate(any, scene.initial, grid, [&](std::int64_t l, const State& s, const StepInfo& info) {
-      if (log) (*log)(l, s, info);
-      run.final_state = s;
-    });
+    run_scene(table, any, outputs);
   } catch (const std::exception& e) {
     throw std::runtime_error(
         std::string(method_name(method)) + " at h = " + round_trip(h) +
@@ -78,7 +75,7 @@ TableRun run_table(const TableScene& scene, const MethodParams& method, double h
         " from u = " + round_trip(scene.initial.u) + ", v = " + round_trip(scene.initial.v) +
         ", table phase " + round_trip(scene.phase) + ": " + e.what());
   }
-  run.steps = grid.steps;
+  run.steps = table.grid.steps;
   return run;
 }
 

@@ -15,6 +15,7 @@
 #include <tuple>
 
 #include "cli/progress.hpp"
+#include "impact/run_scene.hpp"
 #include "impact/summary.hpp"
 
 namespace impact::cli {

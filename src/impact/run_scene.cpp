@@ -15,50 +15,88 @@ RunReport run_scene(const Scene& scene, AnyStepper& stepper, const RunOutputs& o
   const auto start = std::chrono::steady_clock::now();
   const auto& channels = scene.output.channels;
   const auto has = [&](Channel c) { return std::ranges::count(channels, c) > 0; };
-  const bool energy = has(Channel::E);
-  // E with a time-dependent force needs the work of f over every step, not only the written ones.
+  const bool energy = outputs.rows && has(Channel::E);
+  // E with a time-dependent force needs the work of f over every step, not only the written ones;
+  // so does a summary's E_T.
   std::optional<WorkEnergy> work;
-  if (energy && !constant_force(scene.model))
+  if ((energy || outputs.summary) && !constant_force(scene.model))
     work.emplace(scene.model, scene.initial, scene.grid.h);
   std::optional<EventLog> log;
   if (outputs.events && !attach_event_sink(stepper, outputs.events))
     log.emplace(scene.model, scene.grid.h, outputs.events);
   std::optional<ErrorObserver> errors;
   if (outputs.against_exact) errors.emplace(scene.model, scene.initial, scene.grid);
+  SummaryObserver summary(scene.model, scene.grid);
 
-  RowStream stream(
-      scene.output.every, scene.grid,
-      [&](const OutputRow& r) {
-        if (!outputs.rows) return;
-        OutputRow row = r;
-        if (energy) {
-          row.energy = work ? work->energy(row.state) : impact::energy(scene.model, row.state);
-          if (!std::isfinite(row.energy)) [[unlikely]]
-            throw NumericalError("at t = " + round_trip(scene.grid.t(row.l)) +
-                                 (work ? ": the energy v^2/2 - f(0) u(0) - W(t) overflows"
-                                       : ": the energy v^2/2 - f u (3-1) overflows") +
-                                 " (u and v are finite)");
-        }
-        outputs.rows(row);
-      },
-      outputs.check_every, outputs.check);
+  // What must see every step runs out of line, on copies, so that a run without any keeps the
+  // plain loop of its rows or of its summary. The summary steps in the loop itself when it is the
+  // run's only output (the sweep), else it joins the out-of-line watch.
+  const bool summary_inline = outputs.summary && !outputs.rows;
   StepWatch watch;
-  if (errors || work || log)
+  if (errors || work || log || outputs.watch || (outputs.summary && !summary_inline))
     watch = [&](std::int64_t l, const State& s, const StepInfo& info) {
       if (errors) (*errors)(l, s, info);
       if (work && l > 0) work->step(l, s);
       if (log) (*log)(l, s, info);
+      if (outputs.summary && !summary_inline) summary(l, s, info);
+      if (outputs.watch) outputs.watch(l, s, info);
     };
+
   RunReport report;
-  const bool sums = has(Channel::N) || has(Channel::iterations);
-  report.summary = simulate_rows(stepper, scene.initial, scene.grid, stream, sums, watch);
+  if (outputs.rows) {
+    RowStream stream(
+        scene.output.every, scene.grid,
+        [&](const OutputRow& r) {
+          OutputRow row = r;
+          if (energy) {
+            row.energy = work ? work->energy(row.state) : impact::energy(scene.model, row.state);
+            if (!std::isfinite(row.energy)) [[unlikely]]
+              throw NumericalError("at t = " + round_trip(scene.grid.t(row.l)) +
+                                   (work ? ": the energy v^2/2 - f(0) u(0) - W(t) overflows"
+                                         : ": the energy v^2/2 - f u (3-1) overflows") +
+                                   " (u and v are finite)");
+          }
+          outputs.rows(row);
+        },
+        outputs.check_every, outputs.check);
+    const bool sums = has(Channel::N) || has(Channel::iterations);
+    report.summary = simulate_rows(stepper, scene.initial, scene.grid, stream, sums, watch);
+  } else if (summary_inline && !watch) {
+    report.summary = simulate(stepper, scene.initial, scene.grid, summary);
+  } else if (summary_inline) {
+    report.summary = simulate(stepper, scene.initial, scene.grid,
+                              [&](std::int64_t l, const State& s, const StepInfo& info) {
+                                summary(l, s, info);
+                                watch_step(watch, l, s, info);
+                              });
+  } else {
+    report.summary = simulate(stepper, scene.initial, scene.grid,
+                              [&](std::int64_t l, const State& s, const StepInfo& info) {
+                                if (watch) watch_step(watch, l, s, info);
+                              });
+  }
   const double total = seconds_since(start);
+  if (outputs.summary) {
+    report.point = summary.result(report.summary);
+    // With f(t), E^n is the E channel's, v^2/2 - f(0) u(0) - W, summed over the same steps, so
+    // that a sweep's E_T is impact run's last E bit for bit.
+    if (work) report.point->energy_final = work->energy(report.point->final);
+  }
   if (errors) {
     report.errors = errors->result(report.summary);
     report.reference_seconds = errors->reference_seconds();
   }
   report.seconds = std::max(0.0, total - report.reference_seconds);
   return report;
+}
+
+PointOutcome summarize(const Scene& scene, bool against_exact) {
+  AnyStepper stepper = make_stepper(scene);
+  RunOutputs outputs;
+  outputs.summary = true;
+  outputs.against_exact = against_exact;
+  const RunReport report = run_scene(scene, stepper, outputs);
+  return {*report.point, report.errors, report.reference_seconds};
 }
 
 }  // namespace impact

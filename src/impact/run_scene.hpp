@@ -1,6 +1,7 @@
-// One run of a scene with the outputs it asks for, as `impact run` makes it and as a program using
-// the library can: the decimated rows (row_stream.hpp) with the scene's channels, the events, the
-// errors against the reference, and the method's own time apart from the reference's.
+// One run of a scene with the outputs it asks for, as `impact run` and `impact sweep` make it and
+// as a program using the library can: the decimated rows (row_stream.hpp) with the scene's
+// channels, a summary, the events, the errors against the reference, and the method's own time
+// apart from the reference's.
 #pragma once
 
 #include <cstdint>
@@ -12,6 +13,7 @@
 #include "impact/row_stream.hpp"
 #include "impact/run.hpp"
 #include "impact/scene.hpp"
+#include "impact/summary.hpp"
 
 namespace impact {
 
@@ -20,6 +22,8 @@ struct RunOutputs {
   RowStream::RowSink rows;
   EventSink events;  // empty: no events
   bool against_exact = false;
+  bool summary = false;  // the run's PointSummary in O(1) memory (a sweep's row, summary.hpp)
+  StepWatch watch;       // a caller's own observer of every step (out of line); empty: none
   // Called every check_every steps (a full disk, progress); 0: never.
   std::int64_t check_every = 0;
   RowStream::Check check;
@@ -27,13 +31,20 @@ struct RunOutputs {
 
 struct RunReport {
   RunSummary summary;
-  std::optional<ErrorNorms> errors;  // with against_exact
-  double seconds = 0.0;              // wall time of the run without the reference's work
-  double reference_seconds = 0.0;    // wall time of the reference (against_exact)
+  std::optional<PointSummary> point;  // with summary
+  std::optional<ErrorNorms> errors;   // with against_exact
+  double seconds = 0.0;               // wall time of the run without the reference's work
+  double reference_seconds = 0.0;     // wall time of the reference (against_exact)
 };
 
-// Runs `stepper` (made for the scene, not yet initialized) over the scene's grid. Throws
-// NumericalError as simulate() does, also when the energy of a row overflows.
+// Runs `stepper` (made for the scene, not yet initialized) over the scene's grid, with every
+// observer a run needs assembled here and only here: rows, summary, events, errors, the work of
+// f(t), the caller's watch. Throws NumericalError as simulate() does, also when the energy of a
+// row overflows.
 RunReport run_scene(const Scene& scene, AnyStepper& stepper, const RunOutputs& outputs);
+
+// run_scene() of the scene's method with a summary (and the errors against the reference when
+// against_exact): one point of `impact sweep`.
+PointOutcome summarize(const Scene& scene, bool against_exact);
 
 }  // namespace impact

@@ -2,22 +2,6 @@
 
 namespace impact {
 
-std::string_view channel_name(Channel c) {
-  switch (c) {
-    case Channel::u:
-      return "u";
-    case Channel::v:
-      return "v";
-    case Channel::N:
-      return "N";
-    case Channel::E:
-      return "E";
-    case Channel::iterations:
-      return "iterations";
-  }
-  return "?";
-}
-
 Scene make_scene(const Model& model, const State& initial, double T, double h,
                  const MethodParams& method) {
   Scene scene;

@@ -7,13 +7,11 @@
 #include <string_view>
 #include <vector>
 
+#include "impact/channels.hpp"
 #include "impact/model.hpp"
 #include "impact/registry.hpp"
 
 namespace impact {
-
-enum class Channel { u, v, N, E, iterations };
-std::string_view channel_name(Channel c);
 
 // A scene is three plain parts, as in DifferentialEquations.jl's problem / algorithm / solve and
 // Siconos's dynamical system + law / integrator: what the solution is of, how it is computed, and

@@ -2,8 +2,6 @@
 
 #include <stdexcept>
 
-#include "impact/work_energy.hpp"
-
 namespace impact {
 
 PointSummary finish_summary(const SummaryLanes<double>& lanes, const Model& model, const Grid& grid,
@@ -21,33 +19,6 @@ PointSummary finish_summary(const SummaryLanes<double>& lanes, const Model& mode
   p.max_u = lanes.max_u;
   p.iterations = iterations;
   return p;
-}
-
-PointOutcome summarize(const Scene& scene, bool against_exact) {
-  AnyStepper stepper = make_stepper(scene);
-  SummaryObserver summary(scene.model, scene.grid);
-  // A time-dependent force's E^n is that of the E channel, v^2/2 - f(0) u(0) - W (work_energy.hpp),
-  // summed over the same steps, so that the sweep's E_T is impact run's last E bit for bit.
-  std::optional<WorkEnergy> work;
-  if (!constant_force(scene.model)) work.emplace(scene.model, scene.initial, scene.grid.h);
-  std::optional<ErrorObserver> errors;
-  if (against_exact) errors.emplace(scene.model, scene.initial, scene.grid);
-  RunSummary run;
-  if (!work && !errors) {
-    run = simulate(stepper, scene.initial, scene.grid, summary);
-  } else {
-    run = simulate(stepper, scene.initial, scene.grid,
-                   [&](std::int64_t l, const State& s, const StepInfo& info) {
-                     summary(l, s, info);
-                     if (work && l > 0) work->step(l, s);
-                     if (errors) (*errors)(l, s, info);
-                   });
-  }
-  PointSummary result = summary.result(run);
-  if (work) result.energy_final = work->energy(result.final);
-  if (!errors) return {result, std::nullopt, 0.0};
-  const ErrorNorms norms = errors->result(run);
-  return {result, norms, errors->reference_seconds()};
 }
 
 std::optional<EnsembleKind> ensemble_kind(const Scene& scene) {

@@ -21,7 +21,7 @@ namespace impact {
 struct PointSummary {
   State final;  // u^n, v^n at T
   // E^n (3-1), v^2/2 - f u, for a constant force; for a time-dependent one, v^2/2 - f(0) u(0) - W
-  // (work_energy.hpp), set by summarize(); NaN where nothing set it.
+  // (work_energy.hpp), set by summarize() (run_scene.hpp); NaN where nothing set it.
   double energy_final = std::numeric_limits<double>::quiet_NaN();
   std::int64_t contact_steps = 0;
   std::int64_t impacts = 0;  // contact episodes before rest (all of them without rest)
@@ -67,11 +67,6 @@ struct PointOutcome {
   std::optional<ErrorNorms> errors;  // with against_exact
   double reference_seconds = 0;      // the wall time the reference took (against_exact)
 };
-
-// Runs the scene's method through simulate(), as `impact run` does, with a SummaryObserver (and an
-// ErrorObserver against the exact solution when against_exact). Throws NumericalError as
-// simulate() does.
-PointOutcome summarize(const Scene& scene, bool against_exact);
 
 // The ensemble kernel that steps the scene's method bit-identically, if there is one: direct with
 // its closed-form free flight, and moreau_jean, under a constant force.

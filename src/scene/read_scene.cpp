@@ -38,20 +38,18 @@ void read_channels(const KeyReader& r, const toml::node& channels, const MethodI
     r.fail_value("output", "channels", channels, "must be a non-empty array of channel names");
   output.channels.clear();
   std::vector<std::string_view> allowed;
-  for (auto name : find_scene_key("output", "channels")->choices())
-    if (name != channel_name(Channel::iterations) || method.can.iterations_channel)
-      allowed.push_back(name);
+  for (const ChannelInfo& c : impact::channels())
+    if (can_write(method, c.channel)) allowed.push_back(c.name);
   for (const toml::node& item : *list) {
     const toml::value<std::string>* s = item.as_string();
     bool ok = false;
     if (s) {
-      for (Channel c : {Channel::u, Channel::v, Channel::N, Channel::E, Channel::iterations}) {
-        if (channel_name(c) != s->get()) continue;
-        if (c == Channel::iterations && !method.can.iterations_channel) break;
+      for (const ChannelInfo& c : impact::channels()) {
+        if (c.name != s->get() || !can_write(method, c.channel)) continue;
         for (Channel seen : output.channels)
-          if (seen == c)
+          if (seen == c.channel)
             r.fail_value("output", "channels", item, "is listed twice (at most once each)");
-        output.channels.push_back(c);
+        output.channels.push_back(c.channel);
         ok = true;
       }
     }

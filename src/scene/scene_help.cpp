@@ -60,23 +60,6 @@ std::string row(std::string name, const KeySpec& spec, const Scene& defaults, st
          "\n";
 }
 
-std::string_view channel_meaning(Channel c) {
-  switch (c) {
-    case Channel::u:
-      return "position";
-    case Channel::v:
-      return "velocity";
-    case Channel::N:
-      return "the contact impulse over (t_{l-1}, t_l] divided by h, N^{l-1} of (4-1)";
-    case Channel::E:
-      return "energy v^2/2 - f u, (3-1); with a time-dependent force v^2/2 - f(0) u(0) - W(t), W "
-             "the work of f so far";
-    case Channel::iterations:
-      return "Newton or ODE-driver iterations of the step";
-  }
-  return "";
-}
-
 }  // namespace
 
 std::string wrap(std::string_view text, std::size_t width, std::size_t indent, std::size_t start) {
@@ -143,14 +126,10 @@ std::string scene_help(std::size_t width) {
     out += pad("  " + std::string(m.name), kNameEnd) + wrap(m.summary, width, kNameEnd) + "\n";
 
   out += "\nChannels (output.channels; the CSV's header is t, then the channels):\n";
-  std::vector<std::string_view> counting;
-  for (const MethodInfo& m : methods())
-    if (m.can.iterations_channel) counting.push_back(m.name);
-  for (Channel c : {Channel::u, Channel::v, Channel::N, Channel::E, Channel::iterations}) {
-    std::string meaning(channel_meaning(c));
-    if (c == Channel::iterations) meaning += " (" + join(counting) + " only)";
-    out +=
-        pad("  " + std::string(channel_name(c)), kNameEnd) + wrap(meaning, width, kNameEnd) + "\n";
+  for (const ChannelInfo& c : channels()) {
+    std::string meaning(c.meaning);
+    if (c.needs) meaning += " (" + join(methods_with(c.needs)) + " only)";
+    out += pad("  " + std::string(c.name), kNameEnd) + wrap(meaning, width, kNameEnd) + "\n";
   }
   return out;
 }

@@ -18,8 +18,7 @@ std::span<const std::string_view> method_names() {
 std::span<const std::string_view> channel_names() {
   static const std::vector<std::string_view> names = [] {
     std::vector<std::string_view> out;
-    for (Channel c : {Channel::u, Channel::v, Channel::N, Channel::E, Channel::iterations})
-      out.push_back(channel_name(c));
+    for (const ChannelInfo& c : channels()) out.push_back(c.name);
     return out;
   }();
   return names;
