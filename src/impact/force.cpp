@@ -3,10 +3,12 @@
 #include <gsl/gsl_integration.h>
 #include <muParser.h>
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
 #include <stdexcept>
+#include <string_view>
 
 namespace impact {
 
@@ -23,6 +25,39 @@ const gsl_integration_glfixed_table& gauss_legendre_16() {
   return *table;
 }
 
+// muparser's '=' assigns to a variable, so "(t=0)+sin(20*t)" would set t to 0 inside the force; a
+// force only reads t. Comparisons ("==", "!=", "<=", ">=") are the other uses of '='.
+void refuse_assignment(const std::string& text) {
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] != '=') continue;
+    const bool comparison =
+        (i > 0 && std::string_view("=!<>").find(text[i - 1]) != std::string_view::npos) ||
+        (i + 1 < text.size() && text[i + 1] == '=');
+    if (!comparison)
+      throw std::invalid_argument("the expression assigns to t with '=' at position " +
+                                  std::to_string(i + 1) +
+                                  "; a force only reads t (to compare, write '==')");
+  }
+}
+
+// A token muparser could not read that starts as a number does ("9.8e", "2.5e+").
+bool starts_number(const std::string& token) {
+  return !token.empty() && (std::isdigit(static_cast<unsigned char>(token[0])) || token[0] == '.');
+}
+
+// The number that starts at `position` of the text: digits, '.', an exponent and its sign.
+std::string number_at(const std::string& text, std::size_t position) {
+  std::size_t end = position;
+  while (end < text.size()) {
+    const char c = text[end];
+    const bool sign =
+        (c == '+' || c == '-') && end > position && (text[end - 1] == 'e' || text[end - 1] == 'E');
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '.' || sign)) break;
+    ++end;
+  }
+  return text.substr(position, end - position);
+}
+
 }  // namespace
 
 // The parser binds t by address, so each ForceFunction owns its parser and its t.
@@ -34,12 +69,17 @@ struct ForceFunction::Expression {
                                   " are allowed");
     if (text.find_first_not_of(" \t") == std::string::npos)
       throw std::invalid_argument("the expression is empty; give a function of t");
+    refuse_assignment(text);
     try {
       parser.DefineVar("t", &t);
       parser.DefineConst("pi", std::numbers::pi);
       parser.SetExpr(text);
       t = 0.0;
       const double f0 = parser.Eval();
+      if (const int values = parser.GetNumResults(); values > 1)
+        throw std::invalid_argument("the expression has " + std::to_string(values) +
+                                    " values separated by commas, of which muparser would keep "
+                                    "the last; give one (a comma only separates arguments)");
       if (!std::isfinite(f0))
         throw std::invalid_argument("the expression is " + show(f0) +
                                     " at t = 0; it must be finite");
@@ -47,6 +87,10 @@ struct ForceFunction::Expression {
       // Positions are counted from 1 here; muparser's own message counts from 0, so it is left
       // out where the position is all it adds.
       const std::string at = " at position " + std::to_string(e.GetPos() + 1);
+      if (e.GetCode() == mu::ecUNASSIGNABLE_TOKEN && starts_number(e.GetToken()))
+        throw std::invalid_argument("the number \"" + number_at(text, e.GetPos()) + "\"" + at +
+                                    " is malformed (a number is digits with an optional fraction "
+                                    "and exponent, as 9.8, .5 or 2.5e-3)");
       if (e.GetCode() == mu::ecUNASSIGNABLE_TOKEN)
         throw std::invalid_argument("the expression uses \"" + e.GetToken() + "\"" + at +
                                     ", which is no variable or function muparser knows (the only "

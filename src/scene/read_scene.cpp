@@ -115,8 +115,9 @@ Scene build(const toml::table& root, const Origins& origins) {
                  "method '" + std::string(method.name) + "'" +
                      (named == origins.of("floor", "cor") ? "" : " (" + named + ")") +
                      " has no restitution law (its compliance contact is elastic); remove "
-                     "floor.cor (--unset floor.cor) or choose direct, fb_newton, moreau_jean or "
-                     "exact");
+                     "floor.cor (--unset floor.cor) or choose direct, fb_newton, moreau_jean or " +
+                     (scene.model.expression.empty() ? "exact" : "event_driven") +
+                     (scene.model.expression.empty() ? "" : " (exact takes no expression)"));
   }
   read_method_keys(r, *root.get("method")->as_table(), scene);
   return scene;
