@@ -78,6 +78,7 @@ class EventTrackOf {
 
  private:
   void start_flight(double t, double v, bool at_crossing = false);
+  void launch(double t, double w, double late);
   void impact(const Contact& c, double& impulse);
   void settle(double t);
   void emit(double t, EventKind kind, double v_before, double v_after) const;
@@ -124,6 +125,20 @@ void EventTrackOf<Law>::start_flight(double t, double v, bool at_crossing) {
   law_.start(t, 0.0, v, at_crossing);
 }
 
+// A launch with speed w > 0 from a contact `late` before t (Contact): the flight starts at t from
+// the state it has reached there, so that the impact times do not fall behind by `late` each.
+template <class Law>
+void EventTrackOf<Law>::launch(double t, double w, double late) {
+  resting_ = false;
+  contact_.reset();
+  if (late == 0.0) {
+    law_.start(t, 0.0, w, false);
+    return;
+  }
+  const double f = law_.force(t), gap = late * (w + f * late / 2);
+  law_.start(t, gap > 0.0 ? gap : 0.0, w + f * late, false);
+}
+
 // On the floor with v = 0 at t: N = -f(t) >= 0 holds it there while f <= 0 (2-2); a force that is
 // zero and falling holds it too, one that is positive lifts it at once, and so does one whose
 // upward zero crossing is t itself to rounding (lift_time(t) == t).
@@ -163,7 +178,7 @@ void EventTrackOf<Law>::impact(const Contact& c, double& impulse) {
     emit(c.t, EventKind::impact, -V, after);
     impulse += after + V;
     if (after > 0.0) {
-      start_flight(c.t, after);
+      launch(c.t, after, c.late);
       return;
     }
   }

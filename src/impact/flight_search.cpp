@@ -43,6 +43,7 @@ HarmonicFlight::HarmonicFlight(const Model& model, double t_a, double gap_a, dou
     : t_a_(t_a), gap_a_(gap_a), v_a_(v_a), f_(model.f) {
   if (model.harmonic && model.harmonic->amplitude != 0.0) {
     const Harmonic& w = *model.harmonic;
+    amplitude_ = w.amplitude;
     omega_ = w.omega;
     phase_ = w.phase;
     k_ = w.amplitude / w.omega;
@@ -86,12 +87,12 @@ double force_rate(const Model& model, double t) {
 
 namespace detail {
 
-double refine_root(double (*gap)(double, void*), void* path, double lo, double hi) {
+Bracket refine_root(double (*gap)(double, void*), void* path, double lo, double hi) {
   GslErrorsAsStatus quiet;
   gsl_function F{gap, path};
   const std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> solver(
       gsl_root_fsolver_alloc(gsl_root_fsolver_brent), &gsl_root_fsolver_free);
-  if (!solver || gsl_root_fsolver_set(solver.get(), &F, lo, hi) != GSL_SUCCESS) return hi;
+  if (!solver || gsl_root_fsolver_set(solver.get(), &F, lo, hi) != GSL_SUCCESS) return {lo, hi};
   for (int i = 0; i < kMaxBrentIterations; ++i) {
     if (gsl_root_fsolver_iterate(solver.get()) != GSL_SUCCESS) break;
     lo = gsl_root_fsolver_x_lower(solver.get());
@@ -100,9 +101,9 @@ double refine_root(double (*gap)(double, void*), void* path, double lo, double h
         GSL_SUCCESS)
       break;
   }
-  // The upper end: the gap there is <= 0 up to rounding, so the contact is never placed before the
-  // floor is reached.
-  return hi;
+  // The upper end is <= 0 up to rounding: a contact at hi is never placed before the floor is
+  // reached.
+  return {lo, hi};
 }
 
 }  // namespace detail
@@ -132,7 +133,7 @@ double lift_time(const Model& model, double t) {
 
 void ClosedFormLaw::start(double t, double gap, double v, bool at_crossing) {
   flight_ = HarmonicFlight(model_, t, gap, v);
-  certified_ = t;
+  certified_ = checked_ = t;
   if (gap == 0.0 && v == 0.0) certified_ += zero_speed_departure(model_, bounds_, t, at_crossing);
 }
 

@@ -82,6 +82,7 @@ OdeLaw::OdeLaw(const OdeLaw& other)
       y_b_(other.y_b_),
       bound_(other.bound_),
       certified_(other.certified_),
+      checked_(other.checked_),
       departing_(other.departing_),
       at_crossing_(other.at_crossing_),
       ode_steps_(other.ode_steps_),
@@ -101,7 +102,7 @@ OdeLaw::~OdeLaw() = default;
 void OdeLaw::start(double t, double gap, double v, bool at_crossing) {
   gsl_odeiv2_evolve_reset(gsl_->evolve);
   gsl_->h_next = settings_.max_step / 4;
-  t_a_ = t_b_ = certified_ = t;
+  t_a_ = t_b_ = certified_ = checked_ = t;
   y_a_ = y_b_ = {gap, v};
   departing_ = gap == 0.0 && v == 0.0;
   at_crossing_ = at_crossing;
@@ -161,7 +162,7 @@ std::optional<Contact> OdeLaw::search(double horizon, long& budget) {
       take_step();
       continue;
     }
-    if (auto contact = search_contact(*this, bound_, certified_, horizon, budget, t_b_))
+    if (auto contact = search_contact(*this, bound_, certified_, checked_, horizon, budget, t_b_))
       return contact;
   }
   if (!ode_ok_) budget = 0;
@@ -185,7 +186,7 @@ Lift OdeLaw::lift_after(double t) const {
         return -static_cast<const OdeLaw*>(self)->force(x);
       };
       if (fa == 0.0) return {a, true};
-      return {detail::refine_root(minus_f, const_cast<OdeLaw*>(this), a, b), true};
+      return {detail::refine_root(minus_f, const_cast<OdeLaw*>(this), a, b).hi, true};
     }
     a = b;
     fa = fb;

@@ -73,7 +73,7 @@ class OdeLaw {
   std::unique_ptr<Gsl> gsl_;
   double t_a_ = 0, t_b_ = 0;
   State y_a_, y_b_;
-  double bound_ = 0, certified_ = 0;
+  double bound_ = 0, certified_ = 0, checked_ = 0;
   bool departing_ = false, at_crossing_ = false;
   long ode_steps_ = 0;
   bool ode_ok_ = true;
