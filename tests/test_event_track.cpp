@@ -1,15 +1,20 @@
 // The event track behind exact (a harmonic force) and event_driven (any f(t)), event_track.hpp:
 // an elastic impact keeps its speed to rounding however late it happens, so long runs do not
-// drift.
+// drift; a run's work is bounded (method.max_events, max_ode_steps) and a track that stops says
+// why.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
 #include <vector>
 
+#include "cli_support.hpp"
 #include "impact/exact.hpp"
 #include "impact/registry.hpp"
 #include "impact/run.hpp"
+#include "impact/scene.hpp"
 
+using Catch::Matchers::Contains;
+using namespace impact::testing;
 using impact::Event;
 using impact::EventKind;
 using impact::Model;
@@ -106,4 +111,74 @@ TEST_CASE("event track: a long elastic run matches the constant force's closed f
       run(tracked_constant(constant.f, true), impact::EventDrivenParams{}, initial, shorter);
   CHECK(std::fabs(ode.end.u - want_shorter.u) < 1e-9);
   CHECK(std::fabs(ode.end.v - want_shorter.v) < 1e-9);
+}
+
+namespace {
+
+// The vibrating table of the report: f = -g + 14.71 sin(omega t), u0 = 0.01, e = 0.5, h = 1e-4.
+const std::string kTable =
+    "[initial]\nu0 = 0.01\nv0 = 0.0\n[floor]\ncor = 0.5\n[force]\nf = -9.80665\namplitude = "
+    "14.71\nomega = 62.831853\n[time]\nT = 2.0\nh = 1e-4\n[method]\nname = \"exact\"\n";
+
+// The message of the NumericalError a scene's run stops with, or "no error".
+std::string failure(const impact::Scene& scene) {
+  impact::AnyStepper stepper = impact::make_stepper(scene);
+  try {
+    impact::simulate(stepper, scene.initial, scene.grid,
+                     [](std::int64_t, const State&, const impact::StepInfo&) {});
+  } catch (const impact::NumericalError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+}  // namespace
+
+TEST_CASE("event track: a run that passes more events than method.max_events stops saying so",
+          "[event_track][regression]") {
+  // At omega = 1e9 the table throws the particle up and catches it every 6e-9 s once it has
+  // landed (t = 0.045): 2.7e7 events by t = 0.16, 7.4 GB of --events by T = 0.25, and T = 2 ran
+  // for about 30 min. With the automatic budget (1e6 + 1000 per grid step) it stops at t = 0.138.
+  TempDir dir;
+  dir.write("table.toml", kTable);
+  CHECK_FAILS_CLEANLY(dir, "run table.toml -o out.csv --set force.omega=1e9 --set time.T=0.25", 1,
+                      Contains("more than method.max_events allows (automatic: 1000000 + 1000 "
+                               "per grid step, 2377000 here)") &&
+                          Contains("raise method.max_events") && !Contains("did not converge"));
+  // The key, for exact, and the same bound for event_driven (an expression bouncing every
+  // 2.8e-4 s, 7071 impacts in 2 s).
+  impact::Scene table = impact::parse_scene(
+      kTable, "table.toml", {"force.omega=1e9", "time.T=0.25", "method.max_events=10000"});
+  CHECK_THAT(failure(table), Contains("passed 10001 events") &&
+                                 Contains("more than method.max_events allows (10000)"));
+  Model bouncing;
+  bouncing.expression = "-1e8";
+  const impact::Scene ode = impact::make_scene(bouncing, {1.0, 0.0}, 2.0, 1e-3,
+                                               impact::EventDrivenParams{.max_events = 1000});
+  CHECK_THAT(failure(ode), Contains("passed 1001 events") && Contains("(1000)"));
+  // Its ODE steps are bounded too: a force that varies every 1e-7 s.
+  Model fast;
+  fast.expression = "-9.8 + 1e4 * sin(1e7 * t)";
+  const impact::Scene steps = impact::make_scene(fast, {1.0, 0.0}, 1.0, 1e-3,
+                                                 impact::EventDrivenParams{.max_ode_steps = 10000});
+  CHECK_THAT(failure(steps), Contains("rk8pd used up the run's budget of ODE steps (10000") &&
+                                 Contains("raise method.max_ode_steps"));
+  // Negative budgets are out of range.
+  CHECK_THROWS_WITH(impact::parse_scene(kTable, "table.toml", {"method.max_events=-1"}),
+                    Contains("method.max_events = -1"));
+}
+
+TEST_CASE("event track: a contact search that stalls says where it stalled",
+          "[event_track][regression]") {
+  // amplitude = 1e300: each certified step near the floor is at most sqrt(2 gap / 1e300) s. It used
+  // to read "the solve did not converge after 0 iterations".
+  for (const char* method : {"exact", "event_driven"}) {
+    INFO(method);
+    const impact::Scene scene = impact::parse_scene(
+        kTable, "table.toml", {"force.amplitude=1e300", std::string("method.name=") + method});
+    const std::string message = failure(scene);
+    CHECK_THAT(message, Contains("step 0 (from t = 0): the contact search stalled") &&
+                            Contains("reached only t = ") && Contains("the bound on |f|") &&
+                            !Contains("iterations"));
+  }
 }

@@ -28,17 +28,17 @@ struct ErrorNorms {
 
 // The exact solution at the grid times, in increasing order, for any force: ExactSolution's closed
 // form for a constant one, EventTrack for a harmonic one and the method event_driven's ODE track
-// (default tolerances) for an expression; impact_time(1) of a time-dependent force is known once
-// the samples have passed it.
+// (default tolerances, f evaluated up to `end` only); impact_time(1) of a time-dependent force is
+// known once the samples have passed it.
 class ReferenceSolution {
  public:
-  ReferenceSolution(const Model& model, const State& initial) : initial_(initial) {
+  ReferenceSolution(const Model& model, const State& initial, double end) : initial_(initial) {
     if (constant_force(model))
       closed_form_.emplace(model, initial);
     else if (model.expression.empty())
       track_.emplace(model, initial, 0.0);
     else
-      ode_track_.emplace(OdeLaw(model, OdeSettings{}), model, initial, 0.0);
+      ode_track_.emplace(OdeLaw(model, OdeSettings{.end = end}), model, initial, 0.0);
   }
   State at(double t) {
     if (closed_form_) return closed_form_->at(t);
@@ -63,7 +63,11 @@ class ReferenceSolution {
 class ErrorObserver {
  public:
   ErrorObserver(const Model& model, const State& initial, const Grid& grid)
-      : exact_(model, initial), model_(model), grid_(grid), previous_(initial), end_(initial) {}
+      : exact_(model, initial, grid.end()),
+        model_(model),
+        grid_(grid),
+        previous_(initial),
+        end_(initial) {}
 
   void operator()(std::int64_t l, const State& s, const StepInfo& info) {
     const State ref = exact_.at(grid_.t(l));

@@ -256,8 +256,10 @@ double ExactSolution::impulse(double t0, double t1) const {
   return J;
 }
 
-ExactStepper::ExactStepper(const Model& model, double h, const ExactParams&)
-    : model_(model), h_(h) {
+ExactStepper::ExactStepper(const Model& model, double h, const ExactParams& params)
+    : model_(model), h_(h), max_events_(params.max_events) {
+  if (params.max_events < 0)
+    throw std::invalid_argument("method 'exact': max_events must be >= 0 (0: automatic)");
   if (!model.expression.empty())
     throw std::invalid_argument(
         "method 'exact' has no closed-form flight for a force expression; use method "
@@ -335,10 +337,17 @@ StepInfo ExactStepper::harmonic_step(State& s, std::int64_t l) {
   }
   StepInfo info;
   double impulse = 0.0;
+  event_limit_ = run_budget(max_events_, l + 1 - l0_);
+  track_->set_event_limit(event_limit_);
   s = track_->advance(t1, impulse);
   info.contact_force = impulse / h_;
   info.converged = track_->converged();
   return info;
+}
+
+std::string ExactStepper::failure_reason() const {
+  if (!track_) return {};
+  return describe_stop(track_->stop(), {}, max_events_, event_limit_);
 }
 
 }  // namespace impact

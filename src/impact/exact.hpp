@@ -31,6 +31,7 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <string>
 
 #include "impact/event_track.hpp"
 #include "impact/model.hpp"
@@ -76,6 +77,10 @@ class ExactSolution {
 };
 
 struct ExactParams {
+  // The events a run with a harmonic force may pass (EventTrack), then a numerical failure that
+  // says so; 0: automatic, 1e6 plus 1000 per grid step done (run_budget(), event_track.hpp). A
+  // constant force costs O(1) per sample whatever its number of impacts: no bound.
+  std::int64_t max_events = 0;
   bool operator==(const ExactParams&) const = default;
 };
 
@@ -119,6 +124,10 @@ class ExactStepper {
   // impacts slower than kChatterCutoff times the first, then the stick at t_inf.
   void set_event_sink(EventSink sink);
 
+  // Why the last step did not converge (a harmonic force's track: the events budget used up or a
+  // contact search that stalled), for simulate()'s message.
+  std::string failure_reason() const;
+
  private:
   StepInfo closed_form_step(State& s, double t0, double t1);
   StepInfo harmonic_step(State& s, std::int64_t l);
@@ -126,6 +135,7 @@ class ExactStepper {
 
   Model model_;
   double h_;
+  std::int64_t max_events_ = 0, event_limit_ = 0;
   std::optional<ExactSolution> solution_;
   ExactSolution::Flight flight_;
   double rest_begin_ = std::numeric_limits<double>::infinity(), rest_force_ = 0;

@@ -23,6 +23,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <string>
 
 #include "impact/model.hpp"
 
@@ -190,6 +191,9 @@ class ClosedFormLaw {
   // No contact of the current flight in [start, certified()).
   double certified() const { return certified_; }
   void give_up_until(double t) { certified_ = t; }
+  // The bound on |f| the search steps are certified with; the closed forms do not fail.
+  double force_bound() const { return bounds_.B; }
+  std::string failure() const { return {}; }
 
   double force(double t) const { return force_at(model_, t); }
   double rate(double t) const { return force_rate(model_, t); }

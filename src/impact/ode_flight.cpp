@@ -8,8 +8,11 @@
 #include <array>
 #include <cmath>
 #include <exception>
+#include <limits>
+#include <sstream>
 #include <utility>
 
+#include "impact/event_track.hpp"
 #include "impact/gsl_errors.hpp"
 
 namespace impact {
@@ -86,7 +89,10 @@ OdeLaw::OdeLaw(const OdeLaw& other)
       departing_(other.departing_),
       at_crossing_(other.at_crossing_),
       ode_steps_(other.ode_steps_),
-      ode_ok_(other.ode_ok_) {
+      ode_step_limit_(other.ode_step_limit_),
+      ode_ok_(other.ode_ok_),
+      out_of_steps_(other.out_of_steps_),
+      failed_status_(other.failed_status_) {
   gsl_->h_next = other.gsl_->h_next;
 }
 
@@ -126,11 +132,13 @@ void OdeLaw::take_step() {
   t_a_ = t_b_;
   y_a_ = y_b_;
   double t = t_a_, y[2] = {y_a_.u, y_a_.v};
+  const double stop = std::fmin(t_a_ + settings_.max_step, settings_.end);
   const int status = gsl_odeiv2_evolve_apply(gsl_->evolve, gsl_->control, gsl_->step, &gsl_->sys,
-                                             &t, t_a_ + settings_.max_step, &gsl_->h_next, y);
+                                             &t, stop, &gsl_->h_next, y);
   gsl_->rethrow();
   if (status != GSL_SUCCESS || !(t > t_a_) || !std::isfinite(y[0]) || !std::isfinite(y[1])) {
     ode_ok_ = false;
+    failed_status_ = status;
     return;
   }
   ++ode_steps_;
@@ -149,15 +157,39 @@ void OdeLaw::take_step() {
   // is not positive keeps g > 0 there.
   if (departing_) {
     departing_ = false;
-    if (f[0] > 0.0 || at_crossing_)
-      for (int i = 1; i < kSamples && f[i] > 0.0; ++i)
+    if (f[0] > 0.0 || at_crossing_) {
+      int i = 1;
+      for (; i < kSamples && f[i] > 0.0; ++i)
         certified_ = t_a_ + (t_b_ - t_a_) * i / (kSamples - 1);
+      if (i == 1 && f[0] > 0.0) {
+        // f turns down before the first sample: g'' = f > 0 up to its zero, past which (hi) the
+        // search goes on, so that a particle that cannot leave rests from there.
+        const auto force_at = [](double x, void* self) {
+          return static_cast<const OdeLaw*>(self)->force(x);
+        };
+        certified_ =
+            detail::refine_root(force_at, this, t_a_, t_a_ + (t_b_ - t_a_) / (kSamples - 1)).hi;
+      }
+    }
   }
+}
+
+// The contact search has reached the end of the run: a contact there, or none in the run.
+std::optional<Contact> OdeLaw::at_end() {
+  if (y_b_.u <= 0.0 && y_b_.v <= 0.0)
+    return detail::contact_at(t_b_, y_b_, force(t_b_), t_b_ - checked_);
+  certified_ = std::numeric_limits<double>::infinity();
+  return std::nullopt;
 }
 
 std::optional<Contact> OdeLaw::search(double horizon, long& budget) {
   while (budget > 0 && ode_ok_ && certified_ <= horizon) {
     if (certified_ >= t_b_) {
+      if (t_b_ >= settings_.end) return at_end();
+      if (ode_steps_ >= ode_step_limit_) {
+        out_of_steps_ = true;
+        break;
+      }
       --budget;
       take_step();
       continue;
@@ -165,13 +197,30 @@ std::optional<Contact> OdeLaw::search(double horizon, long& budget) {
     if (auto contact = search_contact(*this, bound_, certified_, checked_, horizon, budget, t_b_))
       return contact;
   }
-  if (!ode_ok_) budget = 0;
+  if (!ode_ok_ || out_of_steps_) budget = 0;
   return std::nullopt;
 }
 
+std::string OdeLaw::failure() const {
+  std::ostringstream msg;
+  msg.precision(6);
+  if (out_of_steps_)
+    msg << "rk8pd used up the run's budget of ODE steps (" << ode_steps_ << " by t = " << t_b_
+        << "; method.max_ode_steps, 0: automatic, " << kAutomaticBudget << " + "
+        << kAutomaticBudgetPerGridStep << " per grid step): the force varies on a scale of about "
+        << (t_b_ - t_a_) << " s (its last step); raise method.max_ode_steps, or shorten time.T";
+  else if (!ode_ok_)
+    msg << "rk8pd could not take a step from t = " << t_b_ << " within rtol = " << settings_.rtol
+        << ", atol = " << settings_.atol << " (GSL: " << gsl_strerror(failed_status_)
+        << "): the force is unbounded or not smooth enough near there";
+  return msg.str();
+}
+
+// A central difference, one-sided at the start of time and at the end of the run.
 double OdeLaw::rate(double t) const {
   const double d = 1e-6 * std::fmax(1.0, std::fabs(t));
-  return (force(t + d) - force(t - d)) / (2 * d);
+  const double lo = t - d >= 0.0 ? t - d : t, hi = t + d <= settings_.end ? t + d : t;
+  return (force(hi) - force(lo)) / (hi - lo);
 }
 
 Lift OdeLaw::lift_after(double t) const {
@@ -179,7 +228,7 @@ Lift OdeLaw::lift_after(double t) const {
   if (fa > 0.0) return {t, true};
   const double spacing = settings_.max_step / kLiftSpacing;
   for (int k = 1; k <= kLiftScan; ++k) {
-    const double b = t + spacing * k, fb = force(b);
+    const double b = std::fmin(t + spacing * k, settings_.end), fb = force(b);
     if (fb > 0.0) {
       // The upward crossing in [a, b]: the root of -f, decreasing from >= 0 to < 0 there.
       const auto minus_f = [](double x, void* self) {
@@ -188,6 +237,7 @@ Lift OdeLaw::lift_after(double t) const {
       if (fa == 0.0) return {a, true};
       return {detail::refine_root(minus_f, const_cast<OdeLaw*>(this), a, b).hi, true};
     }
+    if (b >= settings_.end) return {std::numeric_limits<double>::infinity(), true};  // none
     a = b;
     fa = fb;
   }
@@ -206,6 +256,7 @@ std::optional<double> OdeLaw::chatter_window(double t, double V, double e) const
   const double g = -force(t);
   if (!(g > 0.0)) return std::nullopt;
   const double W0 = chatter_trial_window(e, V, g);
+  if (t + W0 > settings_.end) return std::nullopt;  // f is not known beyond the run
   double g_min = g, g_max = g;
   for (int i = 1; i < kChatterSamples; ++i) {
     const double gi = -force(t + W0 * i / (kChatterSamples - 1));

@@ -18,12 +18,21 @@
 //
 // Lift-off: a resting particle lifts where f crosses 0 upward, found by sampling f every max_step/8
 // and refining the first upward sign change with GSL's Brent; a positive excursion of f shorter
-// than that spacing is not seen. The chatter window of event_track.hpp uses g_min and g_max from
-// f sampled over the window (estimated, not certified, with no bound on f').
+// than that spacing is not seen. A particle that leaves the floor with zero speed flies while
+// g'' = f > 0: the first stretch is certified up to the last sample with f > 0, or, when f turns
+// down before the first sample (f = 1e-300 - t), up to the zero of f (Brent). The chatter window of
+// event_track.hpp uses g_min and g_max from f sampled over the window (estimated, not certified,
+// with no bound on f').
+//
+// The end of the run. f is evaluated on [t0, end] only (OdeSettings::end; a force such as
+// sqrt(2 - t) is defined up to T = 2 and no further): the ODE steps, the lift-off scan and the
+// force's rate stop there, and a chatter window that reaches past it is not certified.
 #pragma once
 
+#include <limits>
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "impact/flight_search.hpp"
 #include "impact/force.hpp"
@@ -35,6 +44,7 @@ struct OdeSettings {
   double rtol = 1e-12;
   double atol = 1e-14;
   double max_step = 0.01;
+  double end = std::numeric_limits<double>::infinity();  // the last time f is evaluated at
 };
 
 class OdeLaw {
@@ -53,6 +63,12 @@ class OdeLaw {
   State at(double t) const;
   double certified() const { return certified_; }
   void give_up_until(double t) { certified_ = t; }
+  double force_bound() const { return bound_; }
+  // Why the ODE integration stopped (an rk8pd step that failed, the run's budget of ODE steps
+  // used up), empty while it has not.
+  std::string failure() const;
+  // The ODE steps the run may take in all (event_driven sets it before each grid step).
+  void set_ode_step_limit(long limit) { ode_step_limit_ = limit; }
 
   double force(double t) const { return force_->at(t); }
   double rate(double t) const;
@@ -67,6 +83,7 @@ class OdeLaw {
  private:
   struct Gsl;
   void take_step();
+  std::optional<Contact> at_end();
 
   std::unique_ptr<ForceFunction> force_;  // on the heap: the GSL system points to it
   OdeSettings settings_;
@@ -75,8 +92,9 @@ class OdeLaw {
   State y_a_, y_b_;
   double bound_ = 0, certified_ = 0, checked_ = 0;
   bool departing_ = false, at_crossing_ = false;
-  long ode_steps_ = 0;
-  bool ode_ok_ = true;
+  long ode_steps_ = 0, ode_step_limit_ = std::numeric_limits<long>::max();
+  bool ode_ok_ = true, out_of_steps_ = false;
+  int failed_status_ = 0;  // the GSL status of a step that failed
 };
 
 }  // namespace impact
