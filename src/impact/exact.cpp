@@ -331,7 +331,10 @@ StepInfo ExactStepper::harmonic_step(State& s, std::int64_t l) {
       since_anchor_ = 0;
     }
     rotation_l_ = l + 1;
-    const State g = flight->at(t1, sin_, cos_);
+    // Near the flight's anchor the rotation's differences would carry (a/omega^2) ulp(sin)
+    // against terms of size a dt^2 (harmonic_series.hpp): there the flight in x = omega dt.
+    const State g =
+        flight->near_anchor(t1) ? flight->at_near_anchor(t1) : flight->at(t1, sin_, cos_);
     s = {track_->phi() + std::max(g.u, 0.0), g.v};
     return {};
   }

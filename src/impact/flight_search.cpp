@@ -48,6 +48,7 @@ HarmonicFlight::HarmonicFlight(const Model& model, double t_a, double gap_a, dou
     phase_ = w.phase;
     k_ = w.amplitude / w.omega;
     k_w_ = k_ / w.omega;
+    scaled_ = !(std::fabs(k_w_) <= 0x1p900);
     sin_a_ = std::sin(theta(t_a));
     cos_a_ = std::cos(theta(t_a));
   }
@@ -57,6 +58,13 @@ State HarmonicFlight::at(double t) const {
   const double dt = t - t_a_;
   State s{gap_a_ + dt * (v_a_ + f_ * dt / 2), v_a_ + f_ * dt};
   if (k_ == 0.0) return s;
+  if (scaled_) {  // a/omega^2 beyond 2^900: the terms of harmonic_series.hpp, a dt (...)
+    const SlowAngle w = slow_angle(omega_ * dt);
+    const double a_dt = amplitude_ * dt;
+    s.u += a_dt * dt * (cos_a_ * w.s2 + sin_a_ * w.c2);
+    s.v += a_dt * (cos_a_ * w.c1 + sin_a_ * w.s1);
+    return s;
+  }
   // sin x = 2 sin(x/2) cos(x/2) and 1 - cos x = 2 sin^2(x/2): one sin/cos pair, no cancellation.
   const double x = omega_ * dt, sin_half = std::sin(x / 2), cos_half = std::cos(x / 2);
   const double sin_x = 2 * sin_half * cos_half, one_minus_cos = 2 * sin_half * sin_half;
@@ -140,12 +148,9 @@ void ClosedFormLaw::start(double t, double gap, double v, bool at_crossing) {
 double ClosedFormLaw::rest_impulse(double a, double b) const {
   if (!(b > a)) return 0.0;
   double value = -model_.f * (b - a);
-  if (model_.harmonic && model_.harmonic->amplitude != 0.0) {
-    // cos(x) - cos(y) = 2 sin((x + y)/2) sin((y - x)/2), without cancellation for short rests.
-    const Harmonic& w = *model_.harmonic;
-    const double mid = w.omega * (a + b) / 2 + w.phase, half = w.omega * (b - a) / 2;
-    value -= w.amplitude / w.omega * 2 * std::sin(mid) * std::sin(half);
-  }
+  // cos(x) - cos(y) = 2 sin((x + y)/2) sin((y - x)/2), without cancellation for short rests.
+  if (model_.harmonic && model_.harmonic->amplitude != 0.0)
+    value -= harmonic_integral(*model_.harmonic, a, b);
   return value;
 }
 

@@ -25,6 +25,7 @@
 #include <optional>
 #include <string>
 
+#include "impact/harmonic_series.hpp"
 #include "impact/model.hpp"
 
 namespace impact {
@@ -51,6 +52,17 @@ class HarmonicFlight {
   // which a chatter's impact speeds (sqrt(2 |f| g)) could not decay; this one is exact to rounding
   // in g itself, so the search and the impacts use it.
   State at(double t) const;
+  // The same within omega (t - t_a) < 1/2 of the anchor, without a call: a dt (...) and
+  // a dt^2 (...) of harmonic_series.hpp, accurate for every omega (the two forms above carry
+  // a/omega and a/omega^2 times their rounding, which a slow force makes larger than the flight).
+  bool near_anchor(double t) const { return std::fabs(omega_ * (t - t_a_)) < 0.5; }
+  State at_near_anchor(double t) const {
+    const double dt = t - t_a_;
+    const SlowAngle w = slow_angle_series(omega_ * dt);
+    const double a_dt = amplitude_ * dt;
+    return {gap_a_ + dt * (v_a_ + f_ * dt / 2) + a_dt * dt * (cos_a_ * w.s2 + sin_a_ * w.c2),
+            v_a_ + f_ * dt + a_dt * (cos_a_ * w.c1 + sin_a_ * w.s1)};
+  }
   double start() const { return t_a_; }
   // f(t) = f + A sin(theta(t)).
   double force(double t) const { return k_ == 0.0 ? f_ : f_ + amplitude_ * std::sin(theta(t)); }
@@ -58,6 +70,7 @@ class HarmonicFlight {
  private:
   double t_a_ = 0, gap_a_ = 0, v_a_ = 0, f_ = 0, amplitude_ = 0, omega_ = 0, phase_ = 0;
   double k_ = 0, k_w_ = 0, cos_a_ = 1, sin_a_ = 0;  // A/omega, A/omega^2, cos and sin of theta(t_a)
+  bool scaled_ = false;  // |A/omega^2| > 2^900 (omega -> 0): at() without k_ and k_w_
 };
 
 // The bounds on the force and its derivatives that certify the search steps (see above).

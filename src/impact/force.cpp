@@ -10,6 +10,8 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "impact/harmonic_series.hpp"
+
 namespace impact {
 
 namespace {
@@ -145,12 +147,8 @@ double ForceFunction::at(double t) const {
 
 double ForceFunction::integral(double t0, double t1) const {
   double value = model_.f * (t1 - t0);
-  if (harmonic_) {
-    // cos(a) - cos(b) = 2 sin((a + b)/2) sin((b - a)/2), without cancellation for short steps.
-    const Harmonic& w = *harmonic_;
-    const double mid = w.omega * (t0 + t1) / 2 + w.phase, half = w.omega * (t1 - t0) / 2;
-    value += w.amplitude / w.omega * 2 * std::sin(mid) * std::sin(half);
-  }
+  // cos(a) - cos(b) = 2 sin((a + b)/2) sin((b - a)/2), without cancellation for short steps.
+  if (harmonic_) value += harmonic_integral(*harmonic_, t0, t1);
   if (expression_) {
     gsl_function F{[](double t, void* self) { return (*static_cast<const Expression*>(self))(t); },
                    expression_.get()};
@@ -172,11 +170,19 @@ State ForceFunction::flight(const State& s, double t0, double t1) const {
   if (harmonic_) {
     // u'' = a sin(w t + p): v gains (a/w)(cos(w t0 + p) - cos(w t1 + p)) and u gains
     // (a/w) cos(w t0 + p) dt - (a/w^2)(sin(w t1 + p) - sin(w t0 + p)), the differences written
-    // as products so that a short flight keeps its digits.
+    // as products so that a short flight keeps its digits. Where w dt < 1/2 the u term still
+    // cancels (dt - sin(w dt)/w), so the flight is summed as harmonic_series.hpp writes it.
     const Harmonic& w = *harmonic_;
-    const double a0 = w.omega * t0 + w.phase, mid = w.omega * (t0 + t1) / 2 + w.phase,
-                 half = w.omega * dt / 2;
+    const double a0 = w.omega * t0 + w.phase, x = w.omega * dt;
     const double k = w.amplitude / w.omega;
+    if (std::fabs(x) < 0.5 || !std::isfinite(k / w.omega)) {
+      const SlowAngle terms = slow_angle(x);
+      const double c = std::cos(a0), s = std::sin(a0), a_dt = w.amplitude * dt;
+      next.v += a_dt * (c * terms.c1 + s * terms.s1);
+      next.u += a_dt * dt * (c * terms.s2 + s * terms.c2);
+      return next;
+    }
+    const double mid = w.omega * (t0 + t1) / 2 + w.phase, half = w.omega * dt / 2;
     next.v += k * 2 * std::sin(mid) * std::sin(half);
     next.u += k * (std::cos(a0) * dt - 2 * std::cos(mid) * std::sin(half) / w.omega);
   }
