@@ -1,6 +1,5 @@
 #include "impact/force.hpp"
 
-#include <gsl/gsl_integration.h>
 #include <muParser.h>
 
 #include <cctype>
@@ -11,6 +10,7 @@
 #include <string_view>
 
 #include "impact/harmonic_series.hpp"
+#include "impact/step_quadrature.hpp"
 
 namespace impact {
 
@@ -20,11 +20,6 @@ std::string show(double x) {
   char text[32];
   std::snprintf(text, sizeof text, "%.17g", x);
   return text;
-}
-
-const gsl_integration_glfixed_table& gauss_legendre_16() {
-  static const gsl_integration_glfixed_table* table = gsl_integration_glfixed_table_alloc(16);
-  return *table;
 }
 
 // muparser's '=' assigns to a variable, so "(t=0)+sin(20*t)" would set t to 0 inside the force; a
@@ -150,9 +145,10 @@ double ForceFunction::integral(double t0, double t1) const {
   // cos(a) - cos(b) = 2 sin((a + b)/2) sin((b - a)/2), without cancellation for short steps.
   if (harmonic_) value += harmonic_integral(*harmonic_, t0, t1);
   if (expression_) {
-    gsl_function F{[](double t, void* self) { return (*static_cast<const Expression*>(self))(t); },
-                   expression_.get()};
-    value += gsl_integration_glfixed(&F, t0, t1, &gauss_legendre_16());
+    const Integrand f{
+        [](double t, void* self) { return (*static_cast<const Expression*>(self))(t); },
+        expression_.get()};
+    value += controlled_integral(f, t0, t1);
   }
   return value;
 }

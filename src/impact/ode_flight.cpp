@@ -23,6 +23,11 @@ constexpr int kSamples = 9;         // force samples per ODE step, ends included
 constexpr int kLiftScan = 4096;     // samples of f per lift-off scan before the track asks again
 constexpr int kLiftSpacing = 8;     // lift-off scan spacing: max_step / kLiftSpacing
 constexpr int kChatterSamples = 5;  // samples of f over a chatter window
+// The lift-off scan's search between two samples (hidden_rise): the split point's fraction and
+// the depth, which reaches 1e-9 of the spacing.
+constexpr double kLiftSplit = 0.41421356237309503;  // sqrt(2) - 1
+constexpr int kLiftDepth = 30;
+constexpr int kLiftRescan = 8;  // samples before a lift-off's root, looking for an earlier one
 
 }  // namespace
 
@@ -223,20 +228,55 @@ double OdeLaw::rate(double t) const {
   return (force(hi) - force(lo)) / (hi - lo);
 }
 
+// A positive excursion of f inside (a, b], where f(a) <= 0 and f(b) <= 0: f at a point p a
+// non-dyadic fraction in (so that a force periodic in the scan's spacing is not sampled at one
+// phase), positive there or not excluded by the samples' bound max f + the largest change between
+// neighbours (as for an ODE step's force bound), halves searched in order to a depth of kLiftDepth.
+// Returns a bracket [lo, hi] with f(lo) <= 0 < f(hi) of the first one found.
+std::optional<detail::Bracket> OdeLaw::hidden_rise(double a, double fa, double b, double fb,
+                                                   int depth) const {
+  const double p = a + (b - a) * kLiftSplit, fp = force(p);
+  if (fp > 0.0) return detail::Bracket{a, p};
+  const double bound =
+      std::fmax(fa, std::fmax(fp, fb)) + std::fmax(std::fabs(fp - fa), std::fabs(fb - fp));
+  if (!(bound > 0.0) || depth == 0 || !(a < p && p < b)) return std::nullopt;
+  if (const auto left = hidden_rise(a, fa, p, fp, depth - 1)) return left;
+  return hidden_rise(p, fp, b, fb, depth - 1);
+}
+
+// The first upward crossing of f in (a, b], where f(a) <= 0 < f(b): Brent's root of f in [a, b],
+// unless a positive excursion shows before it (kLiftRescan samples of what lies before the root,
+// each gap searched by hidden_rise), whose own first crossing is then the one. A force faster than
+// the scan crosses several times between two of its samples (the table at 1 kHz against a
+// spacing of 1.25 ms: up, down, up), and Brent may converge to any of those crossings.
+double OdeLaw::first_upward(double a, double fa, double b, int depth) const {
+  if (fa == 0.0) return a;
+  const auto minus_f = [](double x, void* self) {
+    return -static_cast<const OdeLaw*>(self)->force(x);
+  };
+  const detail::Bracket root = detail::refine_root(minus_f, const_cast<OdeLaw*>(this), a, b);
+  if (depth == 0) return root.hi;
+  double x = a, fx = fa;
+  for (int k = 1; k <= kLiftRescan; ++k) {
+    const double y = a + (root.lo - a) * k / kLiftRescan, fy = force(y);
+    if (fy > 0.0) return first_upward(x, fx, y, depth - 1);
+    if (const auto rise = hidden_rise(x, fx, y, fy, kLiftDepth))
+      return first_upward(rise->lo, force(rise->lo), rise->hi, depth - 1);
+    x = y;
+    fx = fy;
+  }
+  return root.hi;
+}
+
 Lift OdeLaw::lift_after(double t) const {
   double a = t, fa = force(a);
   if (fa > 0.0) return {t, true};
   const double spacing = settings_.max_step / kLiftSpacing;
   for (int k = 1; k <= kLiftScan; ++k) {
     const double b = std::fmin(t + spacing * k, settings_.end), fb = force(b);
-    if (fb > 0.0) {
-      // The upward crossing in [a, b]: the root of -f, decreasing from >= 0 to < 0 there.
-      const auto minus_f = [](double x, void* self) {
-        return -static_cast<const OdeLaw*>(self)->force(x);
-      };
-      if (fa == 0.0) return {a, true};
-      return {detail::refine_root(minus_f, const_cast<OdeLaw*>(this), a, b).hi, true};
-    }
+    if (fb > 0.0) return {first_upward(a, fa, b, kLiftDepth), true};
+    if (const auto rise = hidden_rise(a, fa, b, fb, kLiftDepth))
+      return {first_upward(rise->lo, force(rise->lo), rise->hi, kLiftDepth), true};
     if (b >= settings_.end) return {std::numeric_limits<double>::infinity(), true};  // none
     a = b;
     fa = fb;
@@ -257,13 +297,17 @@ std::optional<double> OdeLaw::chatter_window(double t, double V, double e) const
   if (!(g > 0.0)) return std::nullopt;
   const double W0 = chatter_trial_window(e, V, g);
   if (t + W0 > settings_.end) return std::nullopt;  // f is not known beyond the run
-  double g_min = g, g_max = g;
+  // The samples' range widened by the largest change between neighbours (the bound of an ODE
+  // step), so that a force varying faster than the samples does not pass for a steady one.
+  double g_min = g, g_max = g, previous = g, change = 0;
   for (int i = 1; i < kChatterSamples; ++i) {
     const double gi = -force(t + W0 * i / (kChatterSamples - 1));
     g_min = std::fmin(g_min, gi);
     g_max = std::fmax(g_max, gi);
+    change = std::fmax(change, std::fabs(gi - previous));
+    previous = gi;
   }
-  return chatter_window_within(e, V, W0, g_min, g_max);
+  return chatter_window_within(e, V, W0, g_min - change, g_max + change);
 }
 
 }  // namespace impact
