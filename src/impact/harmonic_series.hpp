@@ -1,4 +1,4 @@
-// The harmonic part a sin(omega t + phase) of a free flight for a slow force, omega h tiny.
+// The harmonic part a sin(omega t + phase) of a free flight, in forms accurate for every omega.
 //
 // Over a time s from an anchor at theta_a the force turns by x = omega s, and the flight gains
 //   v: (a/omega)(cos theta_a (1 - cos x) + sin theta_a sin x),
@@ -8,13 +8,12 @@
 // phasor of scheme_flight.hpp, exact's rotation), they carry the rounding of those, ~1e-16, times
 // a/omega^2 (524 287 m of u after 2 s at omega = 1e-20), and a/omega^2 overflows below
 // omega ~ 1e-154. Divided by the powers of x that keep them O(1), the same terms are
-//   v: a s (cos theta_a C1(x) + sin theta_a S1(x)),   u: a s^2 (cos theta_a S2(x) + sin theta_a
-//   C2(x)),
-// S1 = sin x / x, C1 = (1 - cos x) / x, C2 = (1 - cos x) / x^2, S2 = (x - sin x) / x^2, each
-// accurate to rounding for every x: by its Taylor series for |x| < 1/2 (to x^17; the first term
-// left out is below 1e-22 of the sum), from sin x and cos x above (losing at most 3 bits to the
-// differences 1 - cos x >= 0.12 and x - sin x >= 0.02). A force with omega = 0 is then the constant
-// force a sin(phase) bit for bit in these terms.
+//   v: a s (cos theta_a C1 + sin theta_a S1),   u: a s^2 (cos theta_a S2 + sin theta_a C2),
+// with S1 = sin x / x, C1 = (1 - cos x) / x, C2 = (1 - cos x) / x^2, S2 = (x - sin x) / x^2, each
+// accurate to rounding: by its Taylor series for |x| < 1/2 (to x^17; the first term left out is
+// below 1e-22 of the sum), from sin x and cos x above (losing a few bits to the differences
+// 1 - cos x >= 0.12 and x - sin x >= 0.02). At omega = 0 they are the constant force
+// a sin(phase): S1 = 1, C2 = 1/2, C1 = S2 = 0.
 #pragma once
 
 #include <array>
@@ -24,11 +23,12 @@
 
 namespace impact {
 
-// The phase omega h below which the time-steppers and exact's sampling write a harmonic force in
+// The phase omega h below which the time-steppers (scheme_flight.hpp) write a harmonic force in
 // these forms. Above it they keep the phasor's closed forms, whose rounding (a/omega^2) 2 d, with
 // d = 8.7e-15 the phasor's (SchemeFlight::kHarmonicTermError), stays within the scheme's own
 // truncation bound a h^2/6 while omega h >= sqrt(12 d) = 3.2e-7; every shipped scene has
-// omega h >= 6e-5 and keeps its numbers bit for bit.
+// omega h >= 6e-5 and keeps its numbers bit for bit. (exact, whose own accuracy is rounding,
+// samples every flight in these forms within x < 1/2 of its anchor: HarmonicFlight.)
 inline constexpr double kSlowPhase = 3.2e-7;
 
 // S1, C1, C2, S2 of x (above).
