@@ -136,6 +136,39 @@ TEST_CASE("force: an expression that is empty, too long or not evaluable at t = 
                         Contains("at t = 0"));
 }
 
+TEST_CASE("force: a list of values, an assignment or a malformed number is refused",
+          "[force][regression]") {
+  // muparser evaluates "a,b" to its last value and "t=0" assigns to t: both ran as another force.
+  CHECK_SCENE_ERROR(
+      parse(kBase + "[force]\nexpression = \"1e300,-9.8\"\n"),
+      Contains("force.expression = '1e300,-9.8'") && Contains("2 values separated by commas"));
+  CHECK_SCENE_ERROR(parse(kBase, {"force.expression=\"sin(t), cos(t), 1\""}),
+                    Contains("3 values separated by commas"));
+  CHECK_SCENE_ERROR(parse(kBase + "[force]\nexpression = \"(t=0)+sin(20*t)\"\n"),
+                    Contains("force.expression = '(t=0)+sin(20*t)'") &&
+                        Contains("assigns to t with '=' at position 3") && Contains("'=='"));
+  CHECK_SCENE_ERROR(parse(kBase, {"force.expression=\"t = 1\""}), Contains("at position 3"));
+  // Comparisons are fine.
+  for (const char* comparison : {"(t == 0) - 9.8", "(t >= 1) - 9.8", "(t != 1) * (t <= 2) - 1"})
+    CHECK(parse(kBase, {"force.expression=\"" + std::string(comparison) + "\""}).model.expression ==
+          comparison);
+  // A number muparser cannot read used to be reported as the unknown name "9".
+  CHECK_SCENE_ERROR(
+      parse(kBase + "[force]\nexpression = \"-9.8e\"\n"),
+      Contains("the number \"9.8e\" at position 2 is malformed") && !Contains("uses \"9\""));
+  CHECK_SCENE_ERROR(parse(kBase, {"force.expression=\"t*2.5e+\""}),
+                    Contains("the number \"2.5e+\" at position 3 is malformed"));
+}
+
+TEST_CASE("force: penalty with a COR and an expression points to event_driven, not exact",
+          "[force][regression]") {
+  const std::string penalty = "[method]\nname = \"penalty\"\n[floor]\ncor = 0.5\n";
+  CHECK_SCENE_ERROR(
+      parse(with_method(penalty) + "[force]\nexpression = \"-9.8 + sin(t)\"\n"),
+      Contains("has no restitution law") && Contains("event_driven") && !Contains("or exact"));
+  CHECK_SCENE_ERROR(parse(with_method(penalty) + kHarmonic), Contains("or exact"));
+}
+
 TEST_CASE("force: exact with an expression force points to event_driven", "[force]") {
   CHECK_SCENE_ERROR(
       parse(with_method("[method]\nname = \"exact\"\n") +

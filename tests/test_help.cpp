@@ -129,7 +129,9 @@ TEST_CASE("help: run --help lists every key with its default and range, from the
   CHECK_THAT(help_row(rows, "Scene keys", "floor.phi"), Contains("0.0"));
   CHECK_THAT(help_row(rows, "Scene keys", "output.channels"), Contains("['u', 'v']"));
   CHECK_THAT(help_row(rows, "Scene keys", "time.h"), Contains("> 0, <= time.T"));
-  CHECK_THAT(r.out, Contains("  exact: none"));
+  CHECK_THAT(help_row(rows, "  exact:", "max_events"),
+             Contains(" 0 ") && Contains("automatic, 1e6 plus 1000 per grid step"));
+  CHECK_THAT(help_row(rows, "  event_driven:", "max_ode_steps"), Contains("integer in [0, "));
   // The channels, and which methods count iterations.
   for (const char* channel : {"u", "v", "N", "E", "iterations"})
     CHECK_THAT(r.out, Contains("\n  " + std::string(channel) + " "));

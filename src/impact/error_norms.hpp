@@ -31,18 +31,19 @@ struct ErrorNorms {
 
 // The exact solution at the grid times, in increasing order, for any force: ExactSolution's closed
 // form for a constant one, EventTrack for a harmonic one and the method event_driven's ODE track
-// (default tolerances) for an expression; impact_time(1) of a time-dependent force is known once
-// the samples have passed it. The closed form is sampled flight by flight (the flight that held the
-// last sample is kept while the samples stay in it: a polynomial per sample, bit for bit at()).
+// (default tolerances, f evaluated up to `end` only); impact_time(1) of a time-dependent force is
+// known once the samples have passed it. The closed form is sampled flight by flight (the flight
+// that held the last sample is kept while the samples stay in it: a polynomial per sample, bit for
+// bit at()).
 class ReferenceSolution {
  public:
-  ReferenceSolution(const Model& model, const State& initial) : initial_(initial) {
+  ReferenceSolution(const Model& model, const State& initial, double end) : initial_(initial) {
     if (constant_force(model))
       closed_form_.emplace(model, initial);
     else if (model.expression.empty())
       track_.emplace(model, initial, 0.0);
     else
-      ode_track_.emplace(OdeLaw(model, OdeSettings{}), model, initial, 0.0);
+      ode_track_.emplace(OdeLaw(model, OdeSettings{.end = end}), model, initial, 0.0);
     if (closed_form_)
       rest_ = closed_form_->rest_time().value_or(std::numeric_limits<double>::infinity());
   }
@@ -76,7 +77,11 @@ class ReferenceSolution {
 class ErrorObserver {
  public:
   ErrorObserver(const Model& model, const State& initial, const Grid& grid)
-      : exact_(model, initial), model_(model), grid_(grid), previous_(initial), end_(initial) {
+      : exact_(model, initial, grid.end()),
+        model_(model),
+        grid_(grid),
+        previous_(initial),
+        end_(initial) {
     pending_.reserve(kChunk);
   }
 

@@ -18,19 +18,27 @@ void check_range(const char* key, double value, double hi) {
 }  // namespace
 
 EventDriven::EventDriven(const Model& model, double h, const EventDrivenParams& params)
-    : model_(model), h_(h), settings_{params.rtol, params.atol, params.max_step} {
+    : model_(model), h_(h), params_(params), settings_{params.rtol, params.atol, params.max_step} {
   check_range("rtol", params.rtol, 1e-3);
   check_range("atol", params.atol, 1e-3);
   check_range("max_step", params.max_step, 1e300);
+  if (params.max_events < 0 || params.max_ode_steps < 0)
+    throw std::invalid_argument(
+        "method 'event_driven': max_events and max_ode_steps must be >= 0 (0: automatic)");
   const ForceFunction parses(model);  // an expression that does not parse fails here, not later
 }
 
 void EventDriven::initialize(const State& s, std::int64_t l) {
+  l0_ = l;
   track_.emplace(OdeLaw(model_, settings_), model_, s, static_cast<double>(l) * h_);
   track_->set_event_sink(sink_);
 }
 
 StepInfo EventDriven::do_step(State& s, std::int64_t l) {
+  event_limit_ = run_budget(params_.max_events, l + 1 - l0_);
+  track_->set_event_limit(event_limit_);
+  track_->law().set_ode_step_limit(
+      static_cast<long>(run_budget(params_.max_ode_steps, l + 1 - l0_)));
   StepInfo info;
   double impulse = 0.0;
   s = track_->advance(static_cast<double>(l + 1) * h_, impulse);
@@ -42,6 +50,11 @@ StepInfo EventDriven::do_step(State& s, std::int64_t l) {
 void EventDriven::set_event_sink(EventSink sink) {
   sink_ = std::move(sink);
   if (track_) track_->set_event_sink(sink_);
+}
+
+std::string EventDriven::failure_reason() const {
+  if (!track_) return {};
+  return describe_stop(track_->stop(), track_->law().failure(), params_.max_events, event_limit_);
 }
 
 }  // namespace impact

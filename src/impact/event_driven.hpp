@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 
 #include "impact/event_track.hpp"
 #include "impact/events.hpp"
@@ -19,6 +20,10 @@ struct EventDrivenParams {
   double rtol = 1e-12;     // relative tolerance of rk8pd's error control, in (0, 1e-3]
   double atol = 1e-14;     // absolute tolerance, in (0, 1e-3]
   double max_step = 0.01;  // longest ODE step, > 0: caps the spacing of the force samples
+  // The events (impacts, sticks, lifts) and the ODE steps the whole run may take, then a numerical
+  // failure that says so; 0: automatic, 1e6 plus 1000 per grid step done (run_budget()).
+  std::int64_t max_events = 0;
+  std::int64_t max_ode_steps = 0;
   bool operator==(const EventDrivenParams&) const = default;
 };
 
@@ -32,11 +37,20 @@ class EventDriven {
   StepInfo do_step(State& s, std::int64_t l);
   // Receives the impacts, sticks and lifts in increasing t as the samples pass them.
   void set_event_sink(EventSink sink);
+  // The end of the run (make_stepper of a scene sets it): f is evaluated up to it and no further
+  // (ode_flight.hpp). Takes effect at the next initialize().
+  void set_end(double end) { settings_.end = end; }
+
+  // Why the last step did not converge: the budget that was used up, the ODE step that failed or
+  // the contact search that stalled, with what to do; for simulate()'s message.
+  std::string failure_reason() const;
 
  private:
   Model model_;
   double h_;
+  EventDrivenParams params_;
   OdeSettings settings_;
+  std::int64_t l0_ = 0, event_limit_ = 0;
   std::optional<EventTrackOf<OdeLaw>> track_;
   EventSink sink_;
 };

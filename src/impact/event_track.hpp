@@ -30,8 +30,12 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <optional>
 #include <stdexcept>
+#include <string>
+#include <string_view>
 #include <utility>
 
 #include "impact/events.hpp"
@@ -42,6 +46,34 @@ namespace impact {
 
 // The relative impact speed below which a chatter is cut off (see above).
 inline constexpr double kChatterCutoff = 1e-8;
+
+// Why a track stopped following the solution (converged() false).
+struct TrackStop {
+  enum class Reason { none, stalled, events, law } reason = Reason::none;
+  double t = 0;             // the time the track had reached
+  double certified = 0;     // stalled: where the contact search had got to from t
+  double force_bound = 0;   // stalled: the bound on |f| the search's steps were certified with
+  std::int64_t events = 0;  // the events passed by then,
+  double first_event = 0;   // from this time on
+};
+
+// The work a run of exact (f(t)) or event_driven may do, as penalty's ODE steps are bounded: the
+// events (impacts, sticks and lifts) it passes, method.max_events, and event_driven's ODE steps,
+// method.max_ode_steps. `max`, or with 0 the automatic budget, kAutomaticBudget and
+// kAutomaticBudgetPerGridStep more per grid step done: a table at 10 Hz passes a few events per
+// period and event_driven takes about one ODE step per max_step, while a force that makes the
+// particle lift and land every 6e-9 s passed 2.7e7 events in 0.16 s (0.3 us each, 7.4 GB of
+// --events by T = 0.25).
+inline constexpr std::int64_t kAutomaticBudget = 1'000'000, kAutomaticBudgetPerGridStep = 1000;
+inline std::int64_t run_budget(std::int64_t max, std::int64_t grid_steps_done) {
+  return max > 0 ? max : kAutomaticBudget + kAutomaticBudgetPerGridStep * grid_steps_done;
+}
+
+// The message of a stopped track, what stopped it and what to do, for a stepper's
+// failure_reason(): `law_failure` is the law's own account when it gave one, max_events the key's
+// value and budget the events the run was allowed.
+std::string describe_stop(const TrackStop& stop, std::string_view law_failure,
+                          std::int64_t max_events, std::int64_t budget);
 
 template <class Law>
 class EventTrackOf {
@@ -68,8 +100,16 @@ class EventTrackOf {
                                                                               : &law_.flight();
   }
 
-  // False once a contact search stalled or exceeded its step budget (the state is then unreliable).
+  // False once a contact search stalled, the law failed or the events passed the limit (the state
+  // is then unreliable); stop() says which.
   bool converged() const { return converged_; }
+  const TrackStop& stop() const { return stop_; }
+  // The events passed so far (impacts, sticks and lifts, emitted or not), and the most the track
+  // may pass before it stops.
+  std::int64_t events() const { return events_; }
+  void set_event_limit(std::int64_t limit) { event_limit_ = limit; }
+  Law& law() { return law_; }
+  const Law& law() const { return law_; }
   // W of the last chatter cut-off (see above), 0 when there was none.
   double chatter_window() const { return chatter_window_; }
   double phi() const { return phi_; }
@@ -78,9 +118,11 @@ class EventTrackOf {
 
  private:
   void start_flight(double t, double v, bool at_crossing = false);
+  void launch(double t, double w, double late);
   void impact(const Contact& c, double& impulse);
   void settle(double t);
-  void emit(double t, EventKind kind, double v_before, double v_after) const;
+  void emit(double t, EventKind kind, double v_before, double v_after);
+  void stopped(TrackStop::Reason reason);
 
   Law law_;
   double phi_, e_;
@@ -92,6 +134,9 @@ class EventTrackOf {
   double rest_start_ = 0, t_now_ = 0;
   double max_speed_ = 0, chatter_window_ = 0;
   bool converged_ = true;
+  TrackStop stop_;
+  std::int64_t events_ = 0, event_limit_ = std::numeric_limits<std::int64_t>::max();
+  double first_event_ = 0;
 };
 
 // The exact solution for a constant or harmonic force. Throws std::invalid_argument for an
@@ -113,8 +158,16 @@ EventTrackOf<Law>::EventTrackOf(Law law, const Model& model, const State& initia
 }
 
 template <class Law>
-void EventTrackOf<Law>::emit(double t, EventKind kind, double v_before, double v_after) const {
+void EventTrackOf<Law>::emit(double t, EventKind kind, double v_before, double v_after) {
+  if (events_++ == 0) first_event_ = t;
   if (sink_) sink_(Event{t, kind, v_before, v_after});
+}
+
+template <class Law>
+void EventTrackOf<Law>::stopped(TrackStop::Reason reason) {
+  converged_ = false;
+  if (stop_.reason == TrackStop::Reason::none)
+    stop_ = {reason, t_now_, law_.certified(), law_.force_bound(), events_, first_event_};
 }
 
 template <class Law>
@@ -124,6 +177,20 @@ void EventTrackOf<Law>::start_flight(double t, double v, bool at_crossing) {
   law_.start(t, 0.0, v, at_crossing);
 }
 
+// A launch with speed w > 0 from a contact `late` before t (Contact): the flight starts at t from
+// the state it has reached there, so that the impact times do not fall behind by `late` each.
+template <class Law>
+void EventTrackOf<Law>::launch(double t, double w, double late) {
+  resting_ = false;
+  contact_.reset();
+  if (late == 0.0) {
+    law_.start(t, 0.0, w, false);
+    return;
+  }
+  const double f = law_.force(t), gap = late * (w + f * late / 2);
+  law_.start(t, gap > 0.0 ? gap : 0.0, w + f * late, false);
+}
+
 // On the floor with v = 0 at t: N = -f(t) >= 0 holds it there while f <= 0 (2-2); a force that is
 // zero and falling holds it too, one that is positive lifts it at once, and so does one whose
 // upward zero crossing is t itself to rounding (lift_time(t) == t).
@@ -131,7 +198,7 @@ template <class Law>
 void EventTrackOf<Law>::settle(double t) {
   const double f = law_.force(t);
   if (f > 0.0 || (f == 0.0 && law_.rate(t) > 0.0)) {
-    start_flight(t, 0.0);
+    start_flight(t, 0.0, f == 0.0);  // f = 0 rising: t is where f crosses 0 upward
     return;
   }
   const Lift lift = law_.lift_after(t);
@@ -163,7 +230,7 @@ void EventTrackOf<Law>::impact(const Contact& c, double& impulse) {
     emit(c.t, EventKind::impact, -V, after);
     impulse += after + V;
     if (after > 0.0) {
-      start_flight(c.t, after);
+      launch(c.t, after, c.late);
       return;
     }
   }
@@ -176,6 +243,10 @@ State EventTrackOf<Law>::advance(double t, double& impulse) {
   // of the distance to the floor or more), so this is only reached by a search that stalls.
   long budget = 1'000'000;
   for (;;) {
+    if (events_ > event_limit_) {
+      stopped(TrackStop::Reason::events);
+      return {phi_, 0.0};
+    }
     if (resting_) {
       const double from = std::fmax(t_now_, rest_start_);
       while (!lift_.crossing && lift_.t <= t && budget-- > 0) lift_ = law_.lift_after(lift_.t);
@@ -192,7 +263,7 @@ State EventTrackOf<Law>::advance(double t, double& impulse) {
     if (!contact_ && law_.certified() <= t) {
       contact_ = law_.search(t, budget);
       if (budget <= 0) {
-        converged_ = false;
+        stopped(law_.failure().empty() ? TrackStop::Reason::stalled : TrackStop::Reason::law);
         if (!contact_) law_.give_up_until(t);
       }
     }

@@ -256,8 +256,10 @@ double ExactSolution::impulse(double t0, double t1) const {
   return J;
 }
 
-ExactStepper::ExactStepper(const Model& model, double h, const ExactParams&)
-    : model_(model), h_(h) {
+ExactStepper::ExactStepper(const Model& model, double h, const ExactParams& params)
+    : model_(model), h_(h), max_events_(params.max_events) {
+  if (params.max_events < 0)
+    throw std::invalid_argument("method 'exact': max_events must be >= 0 (0: automatic)");
   if (!model.expression.empty())
     throw std::invalid_argument(
         "method 'exact' has no closed-form flight for a force expression; use method "
@@ -329,16 +331,26 @@ StepInfo ExactStepper::harmonic_step(State& s, std::int64_t l) {
       since_anchor_ = 0;
     }
     rotation_l_ = l + 1;
-    const State g = flight->at(t1, sin_, cos_);
+    // Near the flight's anchor the rotation's differences would carry (a/omega^2) ulp(sin)
+    // against terms of size a dt^2 (harmonic_series.hpp): there the flight in x = omega dt.
+    const State g =
+        flight->near_anchor(t1) ? flight->at_near_anchor(t1) : flight->at(t1, sin_, cos_);
     s = {track_->phi() + std::max(g.u, 0.0), g.v};
     return {};
   }
   StepInfo info;
   double impulse = 0.0;
+  event_limit_ = run_budget(max_events_, l + 1 - l0_);
+  track_->set_event_limit(event_limit_);
   s = track_->advance(t1, impulse);
   info.contact_force = impulse / h_;
   info.converged = track_->converged();
   return info;
+}
+
+std::string ExactStepper::failure_reason() const {
+  if (!track_) return {};
+  return describe_stop(track_->stop(), {}, max_events_, event_limit_);
 }
 
 }  // namespace impact

@@ -31,6 +31,7 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <string>
 
 #include "impact/event_track.hpp"
 #include "impact/model.hpp"
@@ -76,6 +77,10 @@ class ExactSolution {
 };
 
 struct ExactParams {
+  // The events a run with a harmonic force may pass (EventTrack), then a numerical failure that
+  // says so; 0: automatic, 1e6 plus 1000 per grid step done (run_budget(), event_track.hpp). A
+  // constant force costs O(1) per sample whatever its number of impacts: no bound.
+  std::int64_t max_events = 0;
   bool operator==(const ExactParams&) const = default;
 };
 
@@ -87,7 +92,10 @@ struct ExactParams {
 // Sampling a grid in order costs a polynomial per sample inside one flight: the flight found for
 // the previous sample is reused while the samples stay in it, and for a harmonic force sin and cos
 // of omega t_l + phase advance by one rotation per step, recomputed exactly every
-// kRotationAnchor samples (the recurrence drifts by about an ulp per step, ~1e-15 in between).
+// kRotationAnchor samples (the recurrence drifts by about an ulp per step, ~1e-15 in between),
+// except within omega (t - t_a) < 1/2 of the flight's anchor, where the flight is a polynomial in
+// that angle (HarmonicFlight::at_near_anchor: the rotation's differences would cost a/omega^2
+// times their rounding, 4.3e8 m at omega = 1e-24).
 class ExactStepper {
  public:
   static constexpr std::int64_t kRotationAnchor = 32;
@@ -119,6 +127,10 @@ class ExactStepper {
   // impacts slower than kChatterCutoff times the first, then the stick at t_inf.
   void set_event_sink(EventSink sink);
 
+  // Why the last step did not converge (a harmonic force's track: the events budget used up or a
+  // contact search that stalled), for simulate()'s message.
+  std::string failure_reason() const;
+
  private:
   StepInfo closed_form_step(State& s, double t0, double t1);
   StepInfo harmonic_step(State& s, std::int64_t l);
@@ -126,6 +138,7 @@ class ExactStepper {
 
   Model model_;
   double h_;
+  std::int64_t max_events_ = 0, event_limit_ = 0;
   std::optional<ExactSolution> solution_;
   ExactSolution::Flight flight_;
   double rest_begin_ = std::numeric_limits<double>::infinity(), rest_force_ = 0;

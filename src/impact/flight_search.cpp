@@ -43,10 +43,12 @@ HarmonicFlight::HarmonicFlight(const Model& model, double t_a, double gap_a, dou
     : t_a_(t_a), gap_a_(gap_a), v_a_(v_a), f_(model.f) {
   if (model.harmonic && model.harmonic->amplitude != 0.0) {
     const Harmonic& w = *model.harmonic;
+    amplitude_ = w.amplitude;
     omega_ = w.omega;
     phase_ = w.phase;
     k_ = w.amplitude / w.omega;
     k_w_ = k_ / w.omega;
+    scaled_ = !(std::fabs(k_w_) <= 0x1p900);
     sin_a_ = std::sin(theta(t_a));
     cos_a_ = std::cos(theta(t_a));
   }
@@ -56,6 +58,13 @@ State HarmonicFlight::at(double t) const {
   const double dt = t - t_a_;
   State s{gap_a_ + dt * (v_a_ + f_ * dt / 2), v_a_ + f_ * dt};
   if (k_ == 0.0) return s;
+  if (scaled_) {  // a/omega^2 beyond 2^900: the terms of harmonic_series.hpp, a dt (...)
+    const SlowAngle w = slow_angle(omega_ * dt);
+    const double a_dt = amplitude_ * dt;
+    s.u += a_dt * dt * (cos_a_ * w.s2 + sin_a_ * w.c2);
+    s.v += a_dt * (cos_a_ * w.c1 + sin_a_ * w.s1);
+    return s;
+  }
   // sin x = 2 sin(x/2) cos(x/2) and 1 - cos x = 2 sin^2(x/2): one sin/cos pair, no cancellation.
   const double x = omega_ * dt, sin_half = std::sin(x / 2), cos_half = std::cos(x / 2);
   const double sin_x = 2 * sin_half * cos_half, one_minus_cos = 2 * sin_half * sin_half;
@@ -86,12 +95,12 @@ double force_rate(const Model& model, double t) {
 
 namespace detail {
 
-double refine_root(double (*gap)(double, void*), void* path, double lo, double hi) {
+Bracket refine_root(double (*gap)(double, void*), void* path, double lo, double hi) {
   GslErrorsAsStatus quiet;
   gsl_function F{gap, path};
   const std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> solver(
       gsl_root_fsolver_alloc(gsl_root_fsolver_brent), &gsl_root_fsolver_free);
-  if (!solver || gsl_root_fsolver_set(solver.get(), &F, lo, hi) != GSL_SUCCESS) return hi;
+  if (!solver || gsl_root_fsolver_set(solver.get(), &F, lo, hi) != GSL_SUCCESS) return {lo, hi};
   for (int i = 0; i < kMaxBrentIterations; ++i) {
     if (gsl_root_fsolver_iterate(solver.get()) != GSL_SUCCESS) break;
     lo = gsl_root_fsolver_x_lower(solver.get());
@@ -100,9 +109,9 @@ double refine_root(double (*gap)(double, void*), void* path, double lo, double h
         GSL_SUCCESS)
       break;
   }
-  // The upper end: the gap there is <= 0 up to rounding, so the contact is never placed before the
-  // floor is reached.
-  return hi;
+  // The upper end is <= 0 up to rounding: a contact at hi is never placed before the floor is
+  // reached.
+  return {lo, hi};
 }
 
 }  // namespace detail
@@ -132,19 +141,16 @@ double lift_time(const Model& model, double t) {
 
 void ClosedFormLaw::start(double t, double gap, double v, bool at_crossing) {
   flight_ = HarmonicFlight(model_, t, gap, v);
-  certified_ = t;
+  certified_ = checked_ = t;
   if (gap == 0.0 && v == 0.0) certified_ += zero_speed_departure(model_, bounds_, t, at_crossing);
 }
 
 double ClosedFormLaw::rest_impulse(double a, double b) const {
   if (!(b > a)) return 0.0;
   double value = -model_.f * (b - a);
-  if (model_.harmonic && model_.harmonic->amplitude != 0.0) {
-    // cos(x) - cos(y) = 2 sin((x + y)/2) sin((y - x)/2), without cancellation for short rests.
-    const Harmonic& w = *model_.harmonic;
-    const double mid = w.omega * (a + b) / 2 + w.phase, half = w.omega * (b - a) / 2;
-    value -= w.amplitude / w.omega * 2 * std::sin(mid) * std::sin(half);
-  }
+  // cos(x) - cos(y) = 2 sin((x + y)/2) sin((y - x)/2), without cancellation for short rests.
+  if (model_.harmonic && model_.harmonic->amplitude != 0.0)
+    value -= harmonic_integral(*model_.harmonic, a, b);
   return value;
 }
 

@@ -23,7 +23,9 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <string>
 
+#include "impact/harmonic_series.hpp"
 #include "impact/model.hpp"
 
 namespace impact {
@@ -50,11 +52,25 @@ class HarmonicFlight {
   // which a chatter's impact speeds (sqrt(2 |f| g)) could not decay; this one is exact to rounding
   // in g itself, so the search and the impacts use it.
   State at(double t) const;
+  // The same within omega (t - t_a) < 1/2 of the anchor, without a call: a dt (...) and
+  // a dt^2 (...) of harmonic_series.hpp, accurate for every omega (the two forms above carry
+  // a/omega and a/omega^2 times their rounding, which a slow force makes larger than the flight).
+  bool near_anchor(double t) const { return std::fabs(omega_ * (t - t_a_)) < 0.5; }
+  State at_near_anchor(double t) const {
+    const double dt = t - t_a_;
+    const SlowAngle w = slow_angle_series(omega_ * dt);
+    const double a_dt = amplitude_ * dt;
+    return {gap_a_ + dt * (v_a_ + f_ * dt / 2) + a_dt * dt * (cos_a_ * w.s2 + sin_a_ * w.c2),
+            v_a_ + f_ * dt + a_dt * (cos_a_ * w.c1 + sin_a_ * w.s1)};
+  }
   double start() const { return t_a_; }
+  // f(t) = f + A sin(theta(t)).
+  double force(double t) const { return k_ == 0.0 ? f_ : f_ + amplitude_ * std::sin(theta(t)); }
 
  private:
-  double t_a_ = 0, gap_a_ = 0, v_a_ = 0, f_ = 0, omega_ = 0, phase_ = 0;
+  double t_a_ = 0, gap_a_ = 0, v_a_ = 0, f_ = 0, amplitude_ = 0, omega_ = 0, phase_ = 0;
   double k_ = 0, k_w_ = 0, cos_a_ = 1, sin_a_ = 0;  // A/omega, A/omega^2, cos and sin of theta(t_a)
+  bool scaled_ = false;  // |A/omega^2| > 2^900 (omega -> 0): at() without k_ and k_w_
 };
 
 // The bounds on the force and its derivatives that certify the search steps (see above).
@@ -63,24 +79,46 @@ struct ForceBounds {
   double B = 0, C = 0, D = 0;  // sup |f|, sup |f'|, sup |f''|
 };
 
+// The first contact of a flight. Its time t is a double at or just past the root of g (g(t) <= 0),
+// so the contact itself happened `late` >= 0 before t: at a late time t ~ 1e5 the doubles are
+// 1.5e-11 apart, and a particle taken at t rather than at the root would land with the speed
+// |v| + |f| late (a bias of one sign at every impact, which made an elastic bounce gain energy at
+// each impact and the error grow as T^2). v is the velocity at the root itself, one Newton step
+// back from t: v(t) - f(t) late with late = g(t) / v(t), exact to O(f' late^2); the flight after
+// the impact then starts at t from the state it reached `late` after the root (EventTrackOf).
 struct Contact {
-  double t = 0;  // the first time with g = 0 after the anchor
-  double v = 0;  // the velocity there, <= 0
+  double t = 0;     // the first double with g <= 0 at or past the contact
+  double v = 0;     // the velocity at the contact, <= 0
+  double late = 0;  // t minus the contact time, in [0, the bracket the root was refined to]
 };
 
 namespace detail {
-// The root of path.at(t).u in [lo, hi], where it decreases strictly from > 0 to <= 0 (GSL Brent).
-double refine_root(double (*gap)(double, void*), void* path, double lo, double hi);
+struct Bracket {
+  double lo = 0, hi = 0;
+};
+// The root of path.at(t).u in [lo, hi], where it decreases strictly from > 0 to <= 0 (GSL Brent),
+// as the bracket it was narrowed to (hi: g <= 0 up to rounding, lo: g > 0).
+Bracket refine_root(double (*gap)(double, void*), void* path, double lo, double hi);
+
+// The contact at t, the end of a bracket [t - width, t] that holds the root, with g(t) = s.u <= 0
+// and velocity s.v; f = f(t) (see Contact).
+inline Contact contact_at(double t, const State& s, double f, double width) {
+  if (!(s.u < 0.0 && s.v < 0.0)) return {t, std::fmin(s.v, 0.0), 0.0};
+  const double late = std::fmin(s.u / s.v, width);
+  return {t, std::fmin(s.v - f * late, 0.0), late};
+}
 }  // namespace detail
 
 // Advances the certificate `certified` (no contact in [anchor, certified)) by certified steps until
 // it passes `horizon` or reaches `end` or the first contact is found, which it returns; B bounds
-// |f| over [certified, end]. At most `budget` steps; budget is decreased by the steps taken (a
-// stalled search uses it up; the caller reports it). Path: State at(double t) const, the gap and
-// velocity.
+// |f| over [certified, end]. `checked` is the last point where the search found g > 0 (the anchor
+// at first): a root that rounding put at a certified step's end lies between it and that end.
+// At most `budget` steps; budget is decreased by the steps taken (a stalled search uses it up; the
+// caller reports it). Path: State at(double t) const, the gap and velocity, and
+// double force(double t) const, f(t).
 template <class Path>
-std::optional<Contact> search_contact(const Path& path, double B, double& certified, double horizon,
-                                      long& budget,
+std::optional<Contact> search_contact(const Path& path, double B, double& certified,
+                                      double& checked, double horizon, long& budget,
                                       double end = std::numeric_limits<double>::infinity()) {
   constexpr double kInfinity = std::numeric_limits<double>::infinity();
   while (certified <= horizon && certified < end && budget > 0) {
@@ -88,7 +126,9 @@ std::optional<Contact> search_contact(const Path& path, double B, double& certif
     const double t = certified;
     const State s = path.at(t);
     const double g = s.u, v = s.v;
-    if (g <= 0.0 && v <= 0.0) return Contact{t, v};  // on (or, by rounding, below) the floor
+    if (g <= 0.0 && v <= 0.0)  // on (or, by rounding, below) the floor
+      return detail::contact_at(t, s, path.force(t), t - checked);
+    checked = t;
     if (v < 0.0 && v * v >= 2 * B * g) {
       // One root in [t, t + s_up], where g decreases strictly (see above).
       const double s_up = 2 * g / (-v + std::sqrt(std::fma(v, v, -2 * B * g)));
@@ -97,8 +137,9 @@ std::optional<Contact> search_contact(const Path& path, double B, double& certif
         const auto gap = [](double x, void* self) {
           return static_cast<const Path*>(self)->at(x).u;
         };
-        const double root = detail::refine_root(gap, const_cast<Path*>(&path), t, hi);
-        return Contact{root, std::fmin(path.at(root).v, 0.0)};
+        const detail::Bracket root = detail::refine_root(gap, const_cast<Path*>(&path), t, hi);
+        return detail::contact_at(root.hi, path.at(root.hi), path.force(root.hi),
+                                  root.hi - root.lo);
       }
       // The gap is still positive at hi (at end, or at t + s_up by rounding): no root before it.
       certified = hi > t ? hi : std::nextafter(t, kInfinity);
@@ -157,12 +198,15 @@ class ClosedFormLaw {
   // zero_speed_departure().
   void start(double t, double gap, double v, bool at_crossing);
   std::optional<Contact> search(double horizon, long& budget) {
-    return search_contact(flight_, bounds_.B, certified_, horizon, budget);
+    return search_contact(flight_, bounds_.B, certified_, checked_, horizon, budget);
   }
   State at(double t) const { return flight_.at(t); }
   // No contact of the current flight in [start, certified()).
   double certified() const { return certified_; }
   void give_up_until(double t) { certified_ = t; }
+  // The bound on |f| the search steps are certified with; the closed forms do not fail.
+  double force_bound() const { return bounds_.B; }
+  std::string failure() const { return {}; }
 
   double force(double t) const { return force_at(model_, t); }
   double rate(double t) const { return force_rate(model_, t); }
@@ -178,7 +222,7 @@ class ClosedFormLaw {
   Model model_;
   ForceBounds bounds_;
   HarmonicFlight flight_;
-  double certified_ = 0;
+  double certified_ = 0, checked_ = 0;
 };
 
 }  // namespace impact

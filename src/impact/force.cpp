@@ -1,12 +1,16 @@
 #include "impact/force.hpp"
 
-#include <gsl/gsl_integration.h>
 #include <muParser.h>
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
 #include <stdexcept>
+#include <string_view>
+
+#include "impact/harmonic_series.hpp"
+#include "impact/step_quadrature.hpp"
 
 namespace impact {
 
@@ -18,9 +22,37 @@ std::string show(double x) {
   return text;
 }
 
-const gsl_integration_glfixed_table& gauss_legendre_16() {
-  static const gsl_integration_glfixed_table* table = gsl_integration_glfixed_table_alloc(16);
-  return *table;
+// muparser's '=' assigns to a variable, so "(t=0)+sin(20*t)" would set t to 0 inside the force; a
+// force only reads t. Comparisons ("==", "!=", "<=", ">=") are the other uses of '='.
+void refuse_assignment(const std::string& text) {
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] != '=') continue;
+    const bool comparison =
+        (i > 0 && std::string_view("=!<>").find(text[i - 1]) != std::string_view::npos) ||
+        (i + 1 < text.size() && text[i + 1] == '=');
+    if (!comparison)
+      throw std::invalid_argument("the expression assigns to t with '=' at position " +
+                                  std::to_string(i + 1) +
+                                  "; a force only reads t (to compare, write '==')");
+  }
+}
+
+// A token muparser could not read that starts as a number does ("9.8e", "2.5e+").
+bool starts_number(const std::string& token) {
+  return !token.empty() && (std::isdigit(static_cast<unsigned char>(token[0])) || token[0] == '.');
+}
+
+// The number that starts at `position` of the text: digits, '.', an exponent and its sign.
+std::string number_at(const std::string& text, std::size_t position) {
+  std::size_t end = position;
+  while (end < text.size()) {
+    const char c = text[end];
+    const bool sign =
+        (c == '+' || c == '-') && end > position && (text[end - 1] == 'e' || text[end - 1] == 'E');
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '.' || sign)) break;
+    ++end;
+  }
+  return text.substr(position, end - position);
 }
 
 }  // namespace
@@ -34,12 +66,17 @@ struct ForceFunction::Expression {
                                   " are allowed");
     if (text.find_first_not_of(" \t") == std::string::npos)
       throw std::invalid_argument("the expression is empty; give a function of t");
+    refuse_assignment(text);
     try {
       parser.DefineVar("t", &t);
       parser.DefineConst("pi", std::numbers::pi);
       parser.SetExpr(text);
       t = 0.0;
       const double f0 = parser.Eval();
+      if (const int values = parser.GetNumResults(); values > 1)
+        throw std::invalid_argument("the expression has " + std::to_string(values) +
+                                    " values separated by commas, of which muparser would keep "
+                                    "the last; give one (a comma only separates arguments)");
       if (!std::isfinite(f0))
         throw std::invalid_argument("the expression is " + show(f0) +
                                     " at t = 0; it must be finite");
@@ -47,6 +84,10 @@ struct ForceFunction::Expression {
       // Positions are counted from 1 here; muparser's own message counts from 0, so it is left
       // out where the position is all it adds.
       const std::string at = " at position " + std::to_string(e.GetPos() + 1);
+      if (e.GetCode() == mu::ecUNASSIGNABLE_TOKEN && starts_number(e.GetToken()))
+        throw std::invalid_argument("the number \"" + number_at(text, e.GetPos()) + "\"" + at +
+                                    " is malformed (a number is digits with an optional fraction "
+                                    "and exponent, as 9.8, .5 or 2.5e-3)");
       if (e.GetCode() == mu::ecUNASSIGNABLE_TOKEN)
         throw std::invalid_argument("the expression uses \"" + e.GetToken() + "\"" + at +
                                     ", which is no variable or function muparser knows (the only "
@@ -101,16 +142,13 @@ double ForceFunction::at(double t) const {
 
 double ForceFunction::integral(double t0, double t1) const {
   double value = model_.f * (t1 - t0);
-  if (harmonic_) {
-    // cos(a) - cos(b) = 2 sin((a + b)/2) sin((b - a)/2), without cancellation for short steps.
-    const Harmonic& w = *harmonic_;
-    const double mid = w.omega * (t0 + t1) / 2 + w.phase, half = w.omega * (t1 - t0) / 2;
-    value += w.amplitude / w.omega * 2 * std::sin(mid) * std::sin(half);
-  }
+  // cos(a) - cos(b) = 2 sin((a + b)/2) sin((b - a)/2), without cancellation for short steps.
+  if (harmonic_) value += harmonic_integral(*harmonic_, t0, t1);
   if (expression_) {
-    gsl_function F{[](double t, void* self) { return (*static_cast<const Expression*>(self))(t); },
-                   expression_.get()};
-    value += gsl_integration_glfixed(&F, t0, t1, &gauss_legendre_16());
+    const Integrand f{
+        [](double t, void* self) { return (*static_cast<const Expression*>(self))(t); },
+        expression_.get()};
+    value += controlled_integral(f, t0, t1);
   }
   return value;
 }
@@ -128,11 +166,19 @@ State ForceFunction::flight(const State& s, double t0, double t1) const {
   if (harmonic_) {
     // u'' = a sin(w t + p): v gains (a/w)(cos(w t0 + p) - cos(w t1 + p)) and u gains
     // (a/w) cos(w t0 + p) dt - (a/w^2)(sin(w t1 + p) - sin(w t0 + p)), the differences written
-    // as products so that a short flight keeps its digits.
+    // as products so that a short flight keeps its digits. Where w dt < 1/2 the u term still
+    // cancels (dt - sin(w dt)/w), so the flight is summed as harmonic_series.hpp writes it.
     const Harmonic& w = *harmonic_;
-    const double a0 = w.omega * t0 + w.phase, mid = w.omega * (t0 + t1) / 2 + w.phase,
-                 half = w.omega * dt / 2;
+    const double a0 = w.omega * t0 + w.phase, x = w.omega * dt;
     const double k = w.amplitude / w.omega;
+    if (std::fabs(x) < 0.5 || !std::isfinite(k / w.omega)) {
+      const SlowAngle terms = slow_angle(x);
+      const double c = std::cos(a0), s = std::sin(a0), a_dt = w.amplitude * dt;
+      next.v += a_dt * (c * terms.c1 + s * terms.s1);
+      next.u += a_dt * dt * (c * terms.s2 + s * terms.c2);
+      return next;
+    }
+    const double mid = w.omega * (t0 + t1) / 2 + w.phase, half = w.omega * dt / 2;
     next.v += k * 2 * std::sin(mid) * std::sin(half);
     next.u += k * (std::cos(a0) * dt - 2 * std::cos(mid) * std::sin(half) / w.omega);
   }

@@ -32,7 +32,9 @@ class ForceFunction {
   // f(t). Throws std::runtime_error naming t where an expression is not finite.
   double at(double t) const;
   // The integral of f over [t0, t1]: in closed form, or for an expression by 16-point
-  // Gauss-Legendre (GSL), exact for polynomials of degree 31 over the interval.
+  // Gauss-Legendre (GSL), exact for polynomials of degree 31 over the interval, with its error
+  // under control (step_quadrature.hpp: checked where the samples do not show a resolved f, then
+  // adaptive); std::runtime_error for an interval it cannot resolve (a pole, a force too fast).
   double integral(double t0, double t1) const;
   // The discrete force of step l of the schemes (4-1)-(4-3): the step's mean (1/h) of the integral
   // of f over [t_l, t_{l+1}], which keeps the impulse identity h sum N^l = v^n - v^0 - integral of

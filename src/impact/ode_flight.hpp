@@ -17,13 +17,29 @@
 // spacing, which rk8pd's own stages (13 per step) could miss as well; max_step caps the spacing.
 //
 // Lift-off: a resting particle lifts where f crosses 0 upward, found by sampling f every max_step/8
-// and refining the first upward sign change with GSL's Brent; a positive excursion of f shorter
-// than that spacing is not seen. The chatter window of event_track.hpp uses g_min and g_max from
-// f sampled over the window (estimated, not certified, with no bound on f').
+// and refining the first upward sign change with GSL's Brent. Between two samples where f <= 0 a
+// positive excursion is looked for at a point sqrt(2) - 1 of the way in, and, where the three
+// samples' maximum plus their largest change (the bound of an ODE step, above) does not exclude
+// one, in both parts recursively (to 1e-9 of the spacing); before the root Brent found, 8 more
+// samples so searched look for an earlier crossing. A table at 1 kHz, whose period is shorter
+// than the spacing, lifts at each of its 1858 lift-offs in 2 s, as exact finds (it used to lift
+// at 929: the scan stepped over every other one). A positive excursion narrower than the samples
+// that fits between them unseen is not guaranteed to be found. A particle that leaves the floor
+// with zero speed flies while g'' = f > 0: the first stretch is certified up to the last sample
+// with f > 0, or, when f turns down before the first sample (f = 1e-300 - t), up to the zero of f
+// (Brent). The chatter window of event_track.hpp uses g_min and g_max from f sampled over the
+// window, widened by the largest change between neighbouring samples (estimated, not certified,
+// with no bound on f').
+//
+// The end of the run. f is evaluated on [t0, end] only (OdeSettings::end; a force such as
+// sqrt(2 - t) is defined up to T = 2 and no further): the ODE steps, the lift-off scan and the
+// force's rate stop there, and a chatter window that reaches past it is not certified.
 #pragma once
 
+#include <limits>
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "impact/flight_search.hpp"
 #include "impact/force.hpp"
@@ -35,6 +51,7 @@ struct OdeSettings {
   double rtol = 1e-12;
   double atol = 1e-14;
   double max_step = 0.01;
+  double end = std::numeric_limits<double>::infinity();  // the last time f is evaluated at
 };
 
 class OdeLaw {
@@ -53,6 +70,12 @@ class OdeLaw {
   State at(double t) const;
   double certified() const { return certified_; }
   void give_up_until(double t) { certified_ = t; }
+  double force_bound() const { return bound_; }
+  // Why the ODE integration stopped (an rk8pd step that failed, the run's budget of ODE steps
+  // used up), empty while it has not.
+  std::string failure() const;
+  // The ODE steps the run may take in all (event_driven sets it before each grid step).
+  void set_ode_step_limit(long limit) { ode_step_limit_ = limit; }
 
   double force(double t) const { return force_->at(t); }
   double rate(double t) const;
@@ -67,16 +90,21 @@ class OdeLaw {
  private:
   struct Gsl;
   void take_step();
+  std::optional<Contact> at_end();
+  std::optional<detail::Bracket> hidden_rise(double a, double fa, double b, double fb,
+                                             int depth) const;
+  double first_upward(double a, double fa, double b, int depth) const;
 
   std::unique_ptr<ForceFunction> force_;  // on the heap: the GSL system points to it
   OdeSettings settings_;
   std::unique_ptr<Gsl> gsl_;
   double t_a_ = 0, t_b_ = 0;
   State y_a_, y_b_;
-  double bound_ = 0, certified_ = 0;
+  double bound_ = 0, certified_ = 0, checked_ = 0;
   bool departing_ = false, at_crossing_ = false;
-  long ode_steps_ = 0;
-  bool ode_ok_ = true;
+  long ode_steps_ = 0, ode_step_limit_ = std::numeric_limits<long>::max();
+  bool ode_ok_ = true, out_of_steps_ = false;
+  int failed_status_ = 0;  // the GSL status of a step that failed
 };
 
 }  // namespace impact

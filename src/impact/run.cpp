@@ -13,11 +13,14 @@ void throw_step_failure(std::int64_t l, double t, State s, StepInfo info,
   std::ostringstream msg;
   msg.precision(17);
   msg << "step " << l << " (from t = " << t << "): ";
-  if (!info.converged)
-    msg << "the solve did not converge after " << info.iterations << " iterations";
-  else
-    msg << "non-finite result u = " << s.u << ", v = " << s.v << ", N = " << info.contact_force;
-  if (!detail.empty()) msg << ": " << detail;
+  if (info.converged)
+    msg << "non-finite result u = " << s.u << ", v = " << s.v << ", N = " << info.contact_force
+        << (detail.empty() ? "" : ": ") << detail;
+  else if (info.iterations > 0)  // an iterative solve: how far it got, then the stepper's account
+    msg << "the solve did not converge after " << info.iterations << " iterations"
+        << (detail.empty() ? "" : ": ") << detail;
+  else  // a stepper that does not iterate (exact, event_driven) says what stopped it
+    msg << (detail.empty() ? "the solve did not converge" : detail);
   throw NumericalError(msg.str(), info.converged);
 }
 

@@ -22,8 +22,16 @@ double GridPhasor::angle(int k, int d) const {
 SchemeForce::SchemeForce(const Model& model, double h)
     : h_(h), has_phasor_(model.harmonic.has_value()) {
   if (has_phasor_) {
-    phasor_ = GridPhasor(*model.harmonic, h);
-    amplitude_over_omega_ = model.harmonic->amplitude / model.harmonic->omega;
+    const Harmonic& w = *model.harmonic;
+    phasor_ = GridPhasor(w, h);
+    amplitude_over_omega_ = w.amplitude / w.omega;
+    slow_ = w.omega * h < kSlowPhase;
+    if (slow_) {
+      const double half = w.omega * h / 2;  // < 1.6e-7: sinc(half) = 1 - half^2/6 to rounding
+      slow_impulse_ = w.amplitude * h * (1 - half * half / 6);
+      cos_half_ = std::cos(half);
+      sin_half_ = std::sin(half);
+    }
   }
   if (!model.expression.empty()) {
     Model expression_part;
@@ -50,12 +58,16 @@ double SchemeForce::expression_integral(const ForceFunction& expression, std::in
 }
 
 SchemeFlight::SchemeFlight(const Model& model, double h) : f_(model.f), h_(h), force_(model, h) {
-  if (model.harmonic && model.harmonic->omega * h <= kMaxClosedFormPhase) {
+  if (force_.slow()) {
+    amplitude_ = model.harmonic->amplitude;
+    omega_ = model.harmonic->omega;
+    h2_over_12_ = h * h / 12;
+  } else if (model.harmonic && model.harmonic->omega * h <= kMaxClosedFormPhase) {
     closed_form_ = true;
     const double trapezoid = h / 2 / std::tan(model.harmonic->omega * h / 2);
     k_trapezoid_ = force_.amplitude_over_omega() * trapezoid;
   }
-  stepped_part_ = !model.expression.empty() || (model.harmonic && !closed_form_);
+  stepped_part_ = !model.expression.empty() || (model.harmonic && !closed_form_ && !force_.slow());
 }
 
 }  // namespace impact

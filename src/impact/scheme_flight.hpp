@@ -18,14 +18,25 @@
 // (a/w)|1/w - c| |sin theta_m - sin theta_a| <= a h^2/6 (1 + O((w h)^2)), and its v is exact.
 // For w h > kMaxClosedFormPhase (c loses its digits as w h nears 2 pi) and for an expression the
 // varying part is stepped, u += h (V + I/2), V += I, from the last anchor.
+//
+// A slow force, w h < kSlowPhase (harmonic_series.hpp): the same sums in terms of x = w s,
+//   v^m = ... + a s (cos theta_a C1(x) + sin theta_a S1(x)),
+//   u^m = ... + a s^2 (cos theta_a S2(x) + sin theta_a C2(x))
+//         + a (h^2/12) (cos theta_a sin x - sin theta_a (1 - cos x)),
+// since c = 1/w - w h^2/12 to rounding there, and I^l = a h sinc(w h/2) sin(theta_l + w h/2):
+// the forms above carry the phasor's rounding times a/w and a/w^2 (u off by 524 287 m after 2 s
+// at w = 1e-20, N = inf at w = 1e-300), these are accurate for every w, and a force with w = 0 is
+// the constant a sin(phase) to rounding.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <vector>
 
 #include "impact/force.hpp"
 #include "impact/free_flight.hpp"
+#include "impact/harmonic_series.hpp"
 #include "impact/model.hpp"
 
 namespace impact {
@@ -121,11 +132,13 @@ class SchemeForce {
     Impulse impulse;
     if (has_phasor_) {
       seek(l);
-      const double c0 = phasor_.cos();
+      const double c0 = phasor_.cos(), s0 = phasor_.sin();
       phasor_.advance();
       // (a/w)(cos theta_l - cos theta_{l+1}); the difference cancels for short steps, to an
-      // absolute error of a few ulp of a/w, the scale of the harmonic part of the velocity.
-      impulse.harmonic = amplitude_over_omega_ * (c0 - phasor_.cos());
+      // absolute error of a few ulp of a/w, the scale of the harmonic part of the velocity. A slow
+      // force: a h sinc(w h/2) sin(theta_l + w h/2), without the difference.
+      impulse.harmonic = slow_ ? slow_impulse_ * (s0 * cos_half_ + c0 * sin_half_)
+                               : amplitude_over_omega_ * (c0 - phasor_.cos());
     }
     if constexpr (Expression)
       if (expression_) impulse.expression = expression_integral(*expression_, l, h_);
@@ -136,8 +149,10 @@ class SchemeForce {
     if (has_phasor_ && phasor_.l() != l) [[unlikely]]
       phasor_.seek(l);
   }
-  // The harmonic part: whether there is one, a / w and the phasor at the current time.
+  // The harmonic part: whether there is one, whether it is slow (harmonic_series.hpp), a / w and
+  // the phasor at the current time.
   bool harmonic() const { return has_phasor_; }
+  bool slow() const { return slow_; }
   const GridPhasor& phasor() const { return phasor_; }
   double amplitude_over_omega() const { return amplitude_over_omega_; }
 
@@ -145,9 +160,11 @@ class SchemeForce {
   static double expression_integral(const ForceFunction& expression, std::int64_t l, double h);
 
   double h_;
-  bool has_phasor_ = false;
+  bool has_phasor_ = false, slow_ = false;
   GridPhasor phasor_;
   double amplitude_over_omega_ = 0;
+  // A slow force: a h sinc(w h/2), cos and sin of w h/2.
+  double slow_impulse_ = 0, cos_half_ = 1, sin_half_ = 0;
   // The expression part alone (f = 0, no harmonic), on the heap: its parser binds t by address.
   std::unique_ptr<ForceFunction> expression_;
 };
@@ -176,7 +193,7 @@ class SchemeFlight {
     anchor_ = s;
     stepped_ = {};
     force_.seek(l);
-    if (closed_form_) {
+    if (closed_form_ || force_.slow()) {
       anchor_cos_ = force_.phasor().cos();
       anchor_sin_ = force_.phasor().sin();
     }
@@ -192,7 +209,7 @@ class SchemeFlight {
     const SchemeForce::Impulse impulse = force_.template advance<Expression>(l);
     impulse_ = impulse.harmonic + impulse.expression;
     if (stepped_part_) {
-      const double stepped = closed_form_ ? impulse.expression : impulse_;
+      const double stepped = closed_form_ || force_.slow() ? impulse.expression : impulse_;
       // (4-1)-(4-2) with N^l = 0 for the stepped part: u += h (V + I/2), V += I.
       stepped_.u += h_ * (stepped_.v + stepped / 2);
       stepped_.v += stepped;
@@ -206,6 +223,8 @@ class SchemeFlight {
       const double k = force_.amplitude_over_omega();
       next.v += k * (anchor_cos_ - force_.phasor().cos());
       next.u += k * (s * anchor_cos_) - k_trapezoid_ * (force_.phasor().sin() - anchor_sin_);
+    } else if (force_.slow()) {
+      add_slow_terms(s, next);
     }
     return next;
   }
@@ -213,11 +232,25 @@ class SchemeFlight {
   double step_force() const { return force_.constant() ? f_ : f_ + impulse_ / h_; }
 
  private:
+  // The slow force's terms of the file's comment at s = t_m - t_a: x below 1/2 by the series,
+  // above from the phasor's rotation since the anchor (no call in either).
+  void add_slow_terms(double s, State& next) const {
+    const double x = omega_ * s, c = force_.phasor().cos(), sn = force_.phasor().sin();
+    const SlowAngle w = std::fabs(x) < 0.5 ? slow_angle_series(x)
+                                           : slow_angle(x, sn * anchor_cos_ - c * anchor_sin_,
+                                                        c * anchor_cos_ + sn * anchor_sin_);
+    const double as = amplitude_ * s;
+    next.v += as * (anchor_cos_ * w.c1 + anchor_sin_ * w.s1);
+    next.u += as * s * (anchor_cos_ * w.s2 + anchor_sin_ * w.c2) +
+              amplitude_ * h2_over_12_ * x * (anchor_cos_ * w.s1 - anchor_sin_ * w.c1);
+  }
+
   double f_, h_;
   SchemeForce force_;
-  bool closed_form_ = false;   // the harmonic part in closed form
+  bool closed_form_ = false;   // the harmonic part in closed form (a slow one: add_slow_terms)
   bool stepped_part_ = false;  // an expression, or a harmonic part not in closed form
   double k_trapezoid_ = 0;     // (a/w) c, c = (h/2) cot(w h/2)
+  double amplitude_ = 0, omega_ = 0, h2_over_12_ = 0;  // a slow force's a, w and h^2/12
   std::int64_t anchor_l_ = 0;
   State anchor_;
   double anchor_cos_ = 0, anchor_sin_ = 0;  // the phasor at the anchor

@@ -41,11 +41,24 @@ void set_number(Scene& s, const KeyValue& v) {
   params<Params>(s).*member = std::get<double>(v);
 }
 
+template <class Params, std::int64_t Params::*member>
+KeyValue get_integer(const Scene& s) {
+  return params<Params>(s).*member;
+}
+template <class Params, std::int64_t Params::*member>
+void set_integer(Scene& s, const KeyValue& v) {
+  params<Params>(s).*member = std::get<std::int64_t>(v);
+}
+
+constexpr std::string_view kMaxEvents =
+    "events (impacts, sticks, lifts) the whole run may pass, then a numerical failure (0: "
+    "automatic, 1e6 plus 1000 per grid step)";
+
 constexpr std::string_view kFreeFlight =
     "free flight between contacts: in closed form from the last contact, or (5-1) term by term at "
     "every step, as printed";
 
-// Every method's keys, in the order --help lists them. A method without keys (exact) has none.
+// Every method's keys, in the order --help lists them.
 const KeySpec kMethodKeys[] = {
     {.table = "method",
      .key = "free_flight",
@@ -175,6 +188,32 @@ const KeySpec kMethodKeys[] = {
      .meaning = "longest ODE step; f is sampled 9 times per step to bound it for the impact search",
      .get = get_number<EventDrivenParams, &EventDrivenParams::max_step>,
      .set = set_number<EventDrivenParams, &EventDrivenParams::max_step>},
+    {.table = "method",
+     .key = "max_events",
+     .method = "event_driven",
+     .type = KeyType::integer,
+     .range = {.lo = 0.0, .hi = 999999999999.0},
+     .meaning = kMaxEvents,
+     .get = get_integer<EventDrivenParams, &EventDrivenParams::max_events>,
+     .set = set_integer<EventDrivenParams, &EventDrivenParams::max_events>},
+    {.table = "method",
+     .key = "max_ode_steps",
+     .method = "event_driven",
+     .type = KeyType::integer,
+     .range = {.lo = 0.0, .hi = 999999999999.0},
+     .meaning = "ODE steps the whole run may take, then a numerical failure (0: automatic, 1e6 "
+                "plus 1000 per grid step)",
+     .get = get_integer<EventDrivenParams, &EventDrivenParams::max_ode_steps>,
+     .set = set_integer<EventDrivenParams, &EventDrivenParams::max_ode_steps>},
+    {.table = "method",
+     .key = "max_events",
+     .method = "exact",
+     .type = KeyType::integer,
+     .range = {.lo = 0.0, .hi = 999999999999.0},
+     .meaning = "with a harmonic force, events (impacts, sticks, lifts) the whole run may pass, "
+                "then a numerical failure (0: automatic, 1e6 plus 1000 per grid step)",
+     .get = get_integer<ExactParams, &ExactParams::max_events>,
+     .set = set_integer<ExactParams, &ExactParams::max_events>},
 };
 
 }  // namespace

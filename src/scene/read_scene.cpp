@@ -100,7 +100,10 @@ Scene build(const toml::table& root, const Origins& origins) {
   // Compliance has no impact law to apply a COR to: refuse rather than silently run elastic.
   if (scene.model.cor && !method.can.restitution) {
     const std::string& named = origins.of("method", "name");
-    std::vector<std::string_view> taking = methods_with(&Capabilities::restitution);
+    // The methods that take a COR and the scene's force (exact takes no expression).
+    std::vector<std::string_view> taking;
+    for (const MethodInfo& m : methods())
+      if (honours(m, scene.model)) taking.push_back(m.name);
     const std::string last(taking.back());
     taking.pop_back();
     r.fail_value("floor", "cor", node_at(root, "floor", "cor"),
