@@ -28,7 +28,7 @@ TEST_CASE("reference sampling: flight by flight is at() bit for bit", "[exact][r
     for (const double h : {1e-3, 3.7e-4, 1e-5}) {
       INFO("u0 = " << c.initial.u << ", f = " << c.model.f << ", h = " << h);
       const impact::ExactSolution exact(c.model, c.initial);
-      impact::ReferenceSolution reference(c.model, c.initial);
+      impact::ReferenceSolution reference(c.model, c.initial, c.T);
       const impact::Grid grid = impact::Grid::covering(c.T, h);
       std::int64_t first_difference = -1;
       for (std::int64_t l = 0; l <= grid.steps && first_difference < 0; ++l) {
