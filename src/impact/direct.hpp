@@ -30,10 +30,13 @@ struct DirectLanes {
 // end, (gap_free, v_free) at t_{l+1}, since = l + 1 - l_anchor. Real is double (with Mask = bool)
 // or a vector of lanes (with Mask its comparison result): the same operations in the same order
 // for both, every value computed and the branches taken as selections, so that each lane of the
-// ensemble is bit-identical to the single-particle solver. `cor` is read only where has_cor holds.
-template <class Real, class Mask>
+// ensemble is bit-identical to the single-particle solver. `cor` and `fixed_point`
+// (restitution_fixed_point of the COR, restitution.hpp; Bits is std::int64_t or the lanes' integer
+// vector) are read only where has_cor holds.
+template <class Real, class Mask, class Bits>
 void direct_contact(DirectLanes<Real>& s, const Real& since, const Real& gap_free,
-                    const Real& v_free, const Real& cor, const Mask& has_cor, double h) {
+                    const Real& v_free, const Real& cor, const Mask& has_cor,
+                    const Bits& fixed_point, double h) {
   const auto free = gap_free > 0;
   // Otherwise (4-3) forces u^{l+1} = phi; (5-1) solved for N^l,
   // N^l = (2/h)((phi - u^l)/h - v^l) - f^l = (2/h^2)(phi - u_free) >= 0.
@@ -41,7 +44,7 @@ void direct_contact(DirectLanes<Real>& s, const Real& since, const Real& gap_fre
   const Real v_scheme = v_free + h * force;  // (4-1), equal to (4-2) here
   // The COR law of restitution.hpp: v^{l+1} = -COR v^l on a step with N^l > 0.
   Real v_contact;
-  velocity_after_step(has_cor, cor, force > 0, s.v, v_scheme, v_contact);
+  velocity_after_step(has_cor, cor, fixed_point, force > 0, s.v, v_scheme, v_contact);
   s.contact_force = free ? Real{} : force;
   s.gap = free ? gap_free : Real{};
   s.v = free ? v_free : v_contact;
@@ -52,15 +55,15 @@ void direct_contact(DirectLanes<Real>& s, const Real& since, const Real& gap_fre
 
 // One step of direct under a constant force f: (5-1) with N^l = 0 in closed form from the anchor,
 // then the contact rule.
-template <class Real, class Mask>
+template <class Real, class Mask, class Bits>
 void direct_step(DirectLanes<Real>& s, const Real& f, const Real& cor, const Mask& has_cor,
-                 double h) {
+                 const Bits& fixed_point, double h) {
   const Real since = s.since + 1;
   const Real t = since * h;
   // (5-1) with N^l = 0: where the particle would be if the floor were not there.
   Real gap_free, v_free;
   free_flight(s.anchor_gap, s.anchor_v, t, f, gap_free, v_free);
-  direct_contact(s, since, gap_free, v_free, cor, has_cor, h);
+  direct_contact(s, since, gap_free, v_free, cor, has_cor, fixed_point, h);
 }
 
 struct DirectParams {
@@ -98,6 +101,7 @@ class BasicDirect {
         f_(model.f),
         cor_(model.cor.value_or(0.0)),
         has_cor_(model.cor),
+        fixed_point_(model.cor ? restitution_fixed_point(*model.cor) : -1),
         h_(h),
         paper_(params.free_flight == FreeFlightForm::paper),
         flight_(model, h) {}
@@ -121,7 +125,7 @@ class BasicDirect {
     } else {
       free_flight(lanes_.anchor_gap, lanes_.anchor_v, since * h_, f_, gap_free, v_free);
     }
-    direct_contact(lanes_, since, gap_free, v_free, cor_, has_cor_, h_);
+    direct_contact(lanes_, since, gap_free, v_free, cor_, has_cor_, fixed_point_, h_);
     if (!(gap_free > 0)) {  // a contact step: the next free flight starts at t_{l+1}
       anchor_l_ = l + 1;
       if constexpr (kTimeDependent) flight_.start(l + 1, {0.0, lanes_.v});
@@ -151,7 +155,8 @@ class BasicDirect {
     info.contact_force = 2 / h_ * ((phi_ - s.u) / h_ - s.v) - f;
     const double v_scheme = 2 / h_ * (phi_ - s.u) - s.v;
     double v_next;
-    velocity_after_step(has_cor_, cor_, info.contact_force > 0, s.v, v_scheme, v_next);
+    velocity_after_step(has_cor_, cor_, fixed_point_, info.contact_force > 0, s.v, v_scheme,
+                        v_next);
     s = {phi_, v_next};
     return info;
   }
@@ -163,6 +168,7 @@ class BasicDirect {
 
   double phi_, f_, cor_;
   bool has_cor_;
+  std::int64_t fixed_point_;  // restitution_fixed_point(cor_), restitution.hpp
   double h_;
   bool paper_;
   DirectLanes<double> lanes_;

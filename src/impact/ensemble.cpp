@@ -52,7 +52,7 @@ struct SummaryColumns {
 // The columns of the ensemble, each at its first particle.
 struct Columns {
   const double *f, *cor;
-  const std::int64_t* has_cor;
+  const std::int64_t *has_cor, *fixed_point;
   double *gap, *v, *force, *anchor_gap, *anchor_v, *since;
   SummaryColumns summary;
 };
@@ -117,7 +117,7 @@ template <int Lanes, int Vectors, bool Summarize>
   for (Eigen::Index first = 0; first < padded; first += Lanes * Vectors) {
     DirectLanes<Real> s[Vectors];
     Real f[Vectors], cor[Vectors];
-    Mask has_cor[Vectors];
+    Mask has_cor[Vectors], fixed_point[Vectors];
     [[maybe_unused]] SummaryLanes<Real> summary[Vectors];
     [[maybe_unused]] Real phi[Vectors], u[Vectors], poison[Vectors];
     for (int b = 0; b < Vectors; ++b) {
@@ -125,6 +125,7 @@ template <int Lanes, int Vectors, bool Summarize>
       load(f[b], c.f + i);
       load(cor[b], c.cor + i);
       load(has_cor[b], c.has_cor + i);
+      load(fixed_point[b], c.fixed_point + i);
       load(s[b].gap, c.gap + i);
       load(s[b].v, c.v + i);
       load(s[b].contact_force, c.force + i);
@@ -138,14 +139,15 @@ template <int Lanes, int Vectors, bool Summarize>
       for (std::int64_t k = 0; k < steps; ++k, l += 1)
         for (int b = 0; b < Vectors; ++b) {
           const Real u_before = u[b], v_before = s[b].v;
-          direct_step(s[b], f[b], cor[b], has_cor[b], h);
+          direct_step(s[b], f[b], cor[b], has_cor[b], fixed_point[b], h);
           u[b] = phi[b] + s[b].gap;
           summarize_step(summary[b], poison[b], l, phi[b], u_before, v_before, u[b],
                          s[b].contact_force);
         }
     } else {
       for (std::int64_t k = 0; k < steps; ++k)
-        for (int b = 0; b < Vectors; ++b) direct_step(s[b], f[b], cor[b], has_cor[b], h);
+        for (int b = 0; b < Vectors; ++b)
+          direct_step(s[b], f[b], cor[b], has_cor[b], fixed_point[b], h);
     }
     for (int b = 0; b < Vectors; ++b) {
       const Eigen::Index i = first + b * Lanes;
@@ -303,6 +305,7 @@ Ensemble::Ensemble(EnsembleMethod method, std::span<const Model> models,
   f_.setZero(padded_);
   cor_.setZero(padded_);
   has_cor_.setZero(padded_);
+  fixed_point_.setConstant(padded_, -1);
   gap_.setZero(padded_);
   v_.setZero(padded_);
   force_.setZero(padded_);
@@ -320,6 +323,7 @@ Ensemble::Ensemble(EnsembleMethod method, std::span<const Model> models,
     // As Direct and MoreauJean read their Model.
     cor_[i] = method == EnsembleMethod::direct ? m.cor.value_or(0.0) : m.cor.value_or(1.0);
     has_cor_[i] = m.cor ? -1 : 0;
+    if (m.cor) fixed_point_[i] = restitution_fixed_point(*m.cor);
     gap_[i] = initial[static_cast<std::size_t>(i)].u - m.phi;
     v_[i] = initial[static_cast<std::size_t>(i)].v;
   }
@@ -377,8 +381,9 @@ void Ensemble::advance(std::int64_t steps) {
   const SummaryColumns summary{phi_.data(),     u_.data(),     steps_.data(),   episodes_.data(),
                                run_.data(),     max_u_.data(), first_l_.data(), first_u_.data(),
                                first_v_.data(), poison_.data()};
-  const Columns c{f_.data(),     cor_.data(),        has_cor_.data(),  gap_.data(),   v_.data(),
-                  force_.data(), anchor_gap_.data(), anchor_v_.data(), since_.data(), summary};
+  const Columns c{f_.data(),        cor_.data(),   has_cor_.data(), fixed_point_.data(),
+                  gap_.data(),      v_.data(),     force_.data(),   anchor_gap_.data(),
+                  anchor_v_.data(), since_.data(), summary};
   const bool direct = method_ == EnsembleMethod::direct;
   const std::int64_t l = steps_done_;
   switch (level_) {
