@@ -145,9 +145,11 @@ template <int Lanes, int Vectors, bool Summarize>
                          s[b].contact_force);
         }
     } else {
-      for (std::int64_t k = 0; k < steps; ++k)
+      for (std::int64_t k = 1; k < steps; ++k)  // gap and N on the last step only (Outputs)
         for (int b = 0; b < Vectors; ++b)
-          direct_step(s[b], f[b], cor[b], has_cor[b], fixed_point[b], h);
+          direct_step<false>(s[b], f[b], cor[b], has_cor[b], fixed_point[b], h);
+      for (int b = 0; b < Vectors; ++b)
+        direct_step(s[b], f[b], cor[b], has_cor[b], fixed_point[b], h);
     }
     for (int b = 0; b < Vectors; ++b) {
       const Eigen::Index i = first + b * Lanes;
@@ -209,9 +211,10 @@ constexpr Eigen::Index kPadding = 192;
 
 // One entry point per instruction set, each compiled for it with the kernels inlined. The block
 // shapes (lanes x vectors) were the fastest of 2..8 vectors on an AMD EPYC (Zen 4): direct keeps
-// 10 values per vector in registers, moreau_jean 6 (experiments/performance/README.md). The
-// summary adds 8 values per vector that change at every step; with them, 3 vectors for direct and
-// 4 for moreau_jean were the fastest of 2, 3, 4 and 6 (README.md, "Sweeps").
+// 10 values per vector in registers, moreau_jean 6 (experiments/performance/README.md); direct's
+// also on an Intel Xeon family 6 model 167 (of 3, 4, 6, 8). The summary adds 8 values per vector
+// that change at every step; with them, 3 vectors for direct and 4 for moreau_jean were the
+// fastest of 2, 3, 4 and 6 (README.md, "Sweeps").
 template <int Lanes, int Vectors, int SummaryVectors>
 [[gnu::always_inline]] inline void direct_entry(const Columns& c, Eigen::Index n,
                                                 std::int64_t first_step, std::int64_t steps,
@@ -301,15 +304,10 @@ Ensemble::Ensemble(EnsembleMethod method, std::span<const Model> models,
   size_ = static_cast<Eigen::Index>(models.size());
   padded_ = (size_ + kPadding - 1) / kPadding * kPadding;
   // The padding particles rest on a floor at 0 without force: finite whatever the method.
-  phi_.setZero(padded_);
-  f_.setZero(padded_);
-  cor_.setZero(padded_);
+  for (Eigen::ArrayXd* column : {&phi_, &f_, &cor_, &gap_, &v_, &force_, &since_})
+    column->setZero(padded_);
   has_cor_.setZero(padded_);
   fixed_point_.setConstant(padded_, -1);
-  gap_.setZero(padded_);
-  v_.setZero(padded_);
-  force_.setZero(padded_);
-  since_.setZero(padded_);
   for (Eigen::Index i = 0; i < size_; ++i) {
     const Model& m = models[static_cast<std::size_t>(i)];
     if (!constant_force(m))  // the kernels take one constant f per particle

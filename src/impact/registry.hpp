@@ -31,9 +31,11 @@ using MethodParams = std::variant<DirectParams, FbNewtonParams, MoreauJeanParams
                                   ExactParams, EventDrivenParams>;
 
 // DirectHarmonic, DirectTimeDependent and MoreauJeanTimeDependent are `direct` and `moreau_jean`
-// with a time-dependent force (direct.hpp says why more than one type).
-using AnyStepper = std::variant<Direct, FbNewton, MoreauJean, Penalty, ExactStepper, EventDriven,
-                                DirectHarmonic, DirectTimeDependent, MoreauJeanTimeDependent>;
+// with a time-dependent force, DirectAsPrinted `direct` with (5-1) as printed (direct.hpp says why
+// more than one type).
+using AnyStepper =
+    std::variant<Direct, FbNewton, MoreauJean, Penalty, ExactStepper, EventDriven, DirectHarmonic,
+                 DirectTimeDependent, MoreauJeanTimeDependent, DirectAsPrinted>;
 
 struct MethodInfo {
   std::string_view name;
