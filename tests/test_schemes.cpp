@@ -257,7 +257,7 @@ TEST_CASE(
   DirectParams paper;
   paper.free_flight = impact::FreeFlightForm::paper;
   auto closed = trajectory(Direct(model, h, {}), initial, grid);
-  auto printed = trajectory(Direct(model, h, paper), initial, grid);
+  auto printed = trajectory(DirectAsPrinted(model, h, paper), initial, grid);
   for (std::size_t l = 0; l < closed.size(); ++l) {
     INFO("l = " << l);
     const double n = static_cast<double>(l) + 1;

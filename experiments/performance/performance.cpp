@@ -12,10 +12,6 @@
 // Usage: exp_performance RESULTS_DIR IMPACT_CLI [Google Benchmark flags]
 // Writes RESULTS_DIR/benchmarks.csv, RESULTS_DIR/summary.toml and RESULTS_DIR/table.md.
 #include <benchmark/benchmark.h>
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
 #include <toml++/toml.h>
 
 #include <algorithm>
@@ -24,11 +20,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
-#include <memory>
-#include <stdexcept>
 #include <string>
-#include <tuple>
-#include <utility>
 #include <vector>
 
 #include "analysis/experiment.hpp"
@@ -37,10 +29,10 @@
 #include "impact/output.hpp"
 #include "impact/registry.hpp"
 #include "impact/run.hpp"
+#include "performance_cli.hpp"
 #include "performance_forced.hpp"
+#include "performance_phases.hpp"
 #include "scene/read_scene.hpp"
-
-extern char** environ;
 
 namespace {
 
@@ -177,54 +169,16 @@ void register_ensemble(EnsembleMethod method, const std::string& method_name,
   add_statistics(b);
 }
 
-// CPU time (user + system) of one `impact run` child process.
-double run_cli(const std::vector<std::string>& args) {
-  std::vector<char*> argv;
-  for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
-  pid_t pid;
-  const int err = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (err != 0) throw std::runtime_error("cannot start " + args[0]);
-  int status = 0;
-  rusage usage{};
-  if (wait4(pid, &status, 0, &usage) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    throw std::runtime_error("impact run failed: " + args[0] + " ... " + args.back());
-  const auto seconds = [](const timeval& t) {
-    return static_cast<double>(t.tv_sec) + 1e-6 * t.tv_usec;
-  };
-  return seconds(usage.ru_utime) + seconds(usage.ru_stime);
-}
-
 void register_cli(const std::string& cli, const std::string& out_dir, const std::string& method,
                   const std::string& scene, std::int64_t steps, std::int64_t every,
                   const std::string& name) {
   const double T = load_scene(scene_path(scene)).T;
-  std::vector<std::string> args{cli,
-                                "run",
-                                scene_path(scene),
-                                "--set",
-                                "method.name=" + method,
-                                "--set",
-                                "time.h=" + round_trip(T / static_cast<double>(steps)),
-                                "--set",
-                                "output.every=" + std::to_string(every),
-                                "--quiet",
-                                "--out",
-                                out_dir + "/cli.csv"};
-  auto warm = std::make_shared<bool>(false);
-  auto* b =
-      benchmark::RegisterBenchmark(name.c_str(), [args, steps, warm](benchmark::State& state) {
-        if (!std::exchange(*warm, true)) run_cli(args);
-        for (auto _ : state) state.SetIterationTime(run_cli(args));
-        state.counters["s_per_step"] = benchmark::Counter(
-            static_cast<double>(steps),
-            benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
-      });
-  add_statistics(b, true);
+  register_cli_run(
+      name,
+      {cli, "run", scene_path(scene), "--set", "method.name=" + method, "--set",
+       "time.h=" + round_trip(T / static_cast<double>(steps)), "--set",
+       "output.every=" + std::to_string(every), "--quiet", "--out", out_dir + "/cli.csv"},
+      steps, &add_statistics);
 }
 
 // Collects the min and median of every benchmark while the console shows them.
@@ -273,7 +227,8 @@ Quantity quantity_of(const std::string& name) {
 void write_tables(const std::string& dir, const Collector& collector) {
   std::string csv = "benchmark,quantity,unit,best,median\n";
   std::string md = "| benchmark | unit | best | median |\n| --- | --- | ---: | ---: |\n";
-  toml::table summary;
+  toml::table summary{{"processor", processor_name()}};
+  md = "Processor: " + processor_name() + "\n\n" + md;
   for (const auto& [name, r] : collector.results()) {
     const Quantity q = quantity_of(name);
     const auto value = [&](const std::map<std::string, double>& m, const std::string& key) {
@@ -300,39 +255,31 @@ void write_tables(const std::string& dir, const Collector& collector) {
   write_text_file(dir + "/summary.toml", summary_text(kPerformance, summary));
 }
 
-// For plot.gp: ns per step in-process and through `impact run` (1e8 steps, 1e7 for fb_newton)
-// with the targets, and the ensemble's throughput.
+// For plot.gp: ns per step of each phase (performance_phases.hpp) and the ensemble's throughput
+// against its targets, 1.5e9 (AVX-512) and 1e9 (AVX2) particle-steps/s for direct.
 void write_plot_data(const std::string& dir, const Collector& collector) {
   const auto& results = collector.results();
-  const auto best = [&](const std::string& name, double scale) {
-    const auto it = results.find(name);
-    if (it == results.end()) return std::nan("");
-    const auto& m = it->second.min;
-    const auto key = m.find(quantity_of(name).key);
-    return key == m.end() ? std::nan("") : key->second * scale;
-  };
-  std::string steps = "case,in-process,impact run,target\n";
-  for (const auto& [method, target, cli_steps] :
-       {std::tuple{"direct", 3.0, "100000000"}, std::tuple{"moreau_jean", 4.0, "100000000"},
-        std::tuple{"fb_newton", 60.0, "10000000"}})
-    for (const auto& scene : kScenes)
-      steps += std::string(method) + " " + scene + "," +
-               round_trip(best("stepper/" + std::string(method) + "/" + label(scene), 1e9)) + "," +
-               round_trip(
-                   best("cli/" + std::string(method) + "/" + label(scene) + "/" + cli_steps, 1e9)) +
-               "," + round_trip(target) + "\n";
-  write_text_file(dir + "/plot_steps.csv", steps);
-  std::string ensemble = "case,T = 10 s sweep,settled (subnormal v)\n";
+  write_text_file(dir + "/plot_phases.csv", phase_plot_data([&](const std::string& name) {
+                    const auto it = results.find(name);
+                    if (it == results.end()) return std::nan("");
+                    const auto key = it->second.min.find("s_per_step");
+                    return key == it->second.min.end() ? std::nan("") : key->second * 1e9;
+                  }));
+  std::string ensemble = "case,T = 10 s sweep,settled at rest,target\n";
   for (const auto& [name, r] : results)
     if (name.rfind("ensemble/", 0) == 0) {
       const auto settled = results.find("ensemble_settled/" + name.substr(9));
+      const double target = name == "ensemble/direct/avx512f" ? 1.5e9
+                            : name == "ensemble/direct/avx2"  ? 1e9
+                                                              : std::nan("");
       ensemble +=
           name.substr(9) + "," + round_trip(r.max.at("particle_steps_per_s")) + "," +
           round_trip(settled == results.end() ? std::nan("")
                                               : settled->second.max.at("particle_steps_per_s")) +
-          "\n";
+          "," + round_trip(target) + "\n";
     }
   write_text_file(dir + "/plot_ensemble.csv", ensemble);
+  write_text_file(dir + "/processor.txt", processor_name() + "\n");
 }
 
 }  // namespace
@@ -379,6 +326,7 @@ int main(int argc, char** argv) {
                  "cli/fb_newton/" + label(scene) + "/10000000");
   }
   register_cli(cli, dir, "direct", "figure3/no_cor", 1'000'000, 1, "cli_rows");
+  register_phase_benchmarks(&add_statistics, cli, dir);
 
   Collector collector;
   benchmark::RunSpecifiedBenchmarks(&collector);

@@ -36,7 +36,8 @@ class ScaledRebound {
   }
 
   StepInfo do_step(State& s, std::int64_t) {
-    direct_step(lanes_, f_, 0.0, false, h_);  // the scheme without COR: v = v_scheme on contact
+    // The scheme without COR (no fixed point: -1): v = v_scheme on contact.
+    direct_step(lanes_, f_, 0.0, false, std::int64_t{-1}, h_);
     if (lanes_.contact_force > 0) {
       lanes_.v *= cor_;  // the free flight restarts from the scaled rebound
       lanes_.anchor_v = lanes_.v;

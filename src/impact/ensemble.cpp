@@ -52,7 +52,7 @@ struct SummaryColumns {
 // The columns of the ensemble, each at its first particle.
 struct Columns {
   const double *f, *cor;
-  const std::int64_t* has_cor;
+  const std::int64_t *has_cor, *fixed_point;
   double *gap, *v, *force, *anchor_gap, *anchor_v, *since;
   SummaryColumns summary;
 };
@@ -117,7 +117,7 @@ template <int Lanes, int Vectors, bool Summarize>
   for (Eigen::Index first = 0; first < padded; first += Lanes * Vectors) {
     DirectLanes<Real> s[Vectors];
     Real f[Vectors], cor[Vectors];
-    Mask has_cor[Vectors];
+    Mask has_cor[Vectors], fixed_point[Vectors];
     [[maybe_unused]] SummaryLanes<Real> summary[Vectors];
     [[maybe_unused]] Real phi[Vectors], u[Vectors], poison[Vectors];
     for (int b = 0; b < Vectors; ++b) {
@@ -125,6 +125,7 @@ template <int Lanes, int Vectors, bool Summarize>
       load(f[b], c.f + i);
       load(cor[b], c.cor + i);
       load(has_cor[b], c.has_cor + i);
+      load(fixed_point[b], c.fixed_point + i);
       load(s[b].gap, c.gap + i);
       load(s[b].v, c.v + i);
       load(s[b].contact_force, c.force + i);
@@ -138,14 +139,17 @@ template <int Lanes, int Vectors, bool Summarize>
       for (std::int64_t k = 0; k < steps; ++k, l += 1)
         for (int b = 0; b < Vectors; ++b) {
           const Real u_before = u[b], v_before = s[b].v;
-          direct_step(s[b], f[b], cor[b], has_cor[b], h);
+          direct_step(s[b], f[b], cor[b], has_cor[b], fixed_point[b], h);
           u[b] = phi[b] + s[b].gap;
           summarize_step(summary[b], poison[b], l, phi[b], u_before, v_before, u[b],
                          s[b].contact_force);
         }
     } else {
-      for (std::int64_t k = 0; k < steps; ++k)
-        for (int b = 0; b < Vectors; ++b) direct_step(s[b], f[b], cor[b], has_cor[b], h);
+      for (std::int64_t k = 1; k < steps; ++k)  // gap and N on the last step only (Outputs)
+        for (int b = 0; b < Vectors; ++b)
+          direct_step<false>(s[b], f[b], cor[b], has_cor[b], fixed_point[b], h);
+      for (int b = 0; b < Vectors; ++b)
+        direct_step(s[b], f[b], cor[b], has_cor[b], fixed_point[b], h);
     }
     for (int b = 0; b < Vectors; ++b) {
       const Eigen::Index i = first + b * Lanes;
@@ -207,9 +211,10 @@ constexpr Eigen::Index kPadding = 192;
 
 // One entry point per instruction set, each compiled for it with the kernels inlined. The block
 // shapes (lanes x vectors) were the fastest of 2..8 vectors on an AMD EPYC (Zen 4): direct keeps
-// 10 values per vector in registers, moreau_jean 6 (experiments/performance/README.md). The
-// summary adds 8 values per vector that change at every step; with them, 3 vectors for direct and
-// 4 for moreau_jean were the fastest of 2, 3, 4 and 6 (README.md, "Sweeps").
+// 10 values per vector in registers, moreau_jean 6 (experiments/performance/README.md); direct's
+// also on an Intel Xeon family 6 model 167 (of 3, 4, 6, 8). The summary adds 8 values per vector
+// that change at every step; with them, 3 vectors for direct and 4 for moreau_jean were the
+// fastest of 2, 3, 4 and 6 (README.md, "Sweeps").
 template <int Lanes, int Vectors, int SummaryVectors>
 [[gnu::always_inline]] inline void direct_entry(const Columns& c, Eigen::Index n,
                                                 std::int64_t first_step, std::int64_t steps,
@@ -299,14 +304,10 @@ Ensemble::Ensemble(EnsembleMethod method, std::span<const Model> models,
   size_ = static_cast<Eigen::Index>(models.size());
   padded_ = (size_ + kPadding - 1) / kPadding * kPadding;
   // The padding particles rest on a floor at 0 without force: finite whatever the method.
-  phi_.setZero(padded_);
-  f_.setZero(padded_);
-  cor_.setZero(padded_);
+  for (Eigen::ArrayXd* column : {&phi_, &f_, &cor_, &gap_, &v_, &force_, &since_})
+    column->setZero(padded_);
   has_cor_.setZero(padded_);
-  gap_.setZero(padded_);
-  v_.setZero(padded_);
-  force_.setZero(padded_);
-  since_.setZero(padded_);
+  fixed_point_.setConstant(padded_, -1);
   for (Eigen::Index i = 0; i < size_; ++i) {
     const Model& m = models[static_cast<std::size_t>(i)];
     if (!constant_force(m))  // the kernels take one constant f per particle
@@ -320,6 +321,7 @@ Ensemble::Ensemble(EnsembleMethod method, std::span<const Model> models,
     // As Direct and MoreauJean read their Model.
     cor_[i] = method == EnsembleMethod::direct ? m.cor.value_or(0.0) : m.cor.value_or(1.0);
     has_cor_[i] = m.cor ? -1 : 0;
+    if (m.cor) fixed_point_[i] = restitution_fixed_point(*m.cor);
     gap_[i] = initial[static_cast<std::size_t>(i)].u - m.phi;
     v_[i] = initial[static_cast<std::size_t>(i)].v;
   }
@@ -377,8 +379,9 @@ void Ensemble::advance(std::int64_t steps) {
   const SummaryColumns summary{phi_.data(),     u_.data(),     steps_.data(),   episodes_.data(),
                                run_.data(),     max_u_.data(), first_l_.data(), first_u_.data(),
                                first_v_.data(), poison_.data()};
-  const Columns c{f_.data(),     cor_.data(),        has_cor_.data(),  gap_.data(),   v_.data(),
-                  force_.data(), anchor_gap_.data(), anchor_v_.data(), since_.data(), summary};
+  const Columns c{f_.data(),        cor_.data(),   has_cor_.data(), fixed_point_.data(),
+                  gap_.data(),      v_.data(),     force_.data(),   anchor_gap_.data(),
+                  anchor_v_.data(), since_.data(), summary};
   const bool direct = method_ == EnsembleMethod::direct;
   const std::int64_t l = steps_done_;
   switch (level_) {

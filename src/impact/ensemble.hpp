@@ -72,7 +72,9 @@ class Ensemble {
   // Per particle, padded with resting particles to a whole number of vector blocks.
   Eigen::ArrayXd phi_, f_, cor_;  // cor_: the COR (direct, 0 without one) or e (moreau_jean)
   Eigen::Array<std::int64_t, Eigen::Dynamic, 1> has_cor_;  // -1 where the model has a COR
-  Eigen::ArrayXd gap_, v_, force_;                         // gap u - phi, as the kernels step it
+  // direct's restitution_fixed_point of the COR (restitution.hpp), -1 without one
+  Eigen::Array<std::int64_t, Eigen::Dynamic, 1> fixed_point_;
+  Eigen::ArrayXd gap_, v_, force_;  // gap u - phi, as the kernels step it
   Eigen::ArrayXd u_;  // the initial u, then phi + gap after each advance(), as the solvers return u
   Eigen::ArrayXd anchor_gap_, anchor_v_, since_;  // direct's free-flight anchor (DirectLanes)
   // The summary (empty unless keep_summary()): the fields of SummaryLanes, and the poison (see

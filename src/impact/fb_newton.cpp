@@ -4,8 +4,6 @@
 #include <limits>
 #include <sstream>
 
-#include "impact/restitution.hpp"
-
 namespace impact {
 namespace {
 
@@ -32,6 +30,7 @@ Root smoothed_root(double d, double h, double eps) {
 void FbNewton::initialize(const State& s, std::int64_t l) {
   gap_ = {s.u - model_.phi, s.v};
   flight_.start(l, gap_);
+  repeats_.reset();
 }
 
 // Newton on S(x) = F_eps(x, N(x)) with x = u^{l+1} - phi (the gap) and
@@ -146,9 +145,10 @@ StepInfo FbNewton::do_step(State& s, std::int64_t l) {
     // below the floor: the same steps as in direct, not those the smoothing alone pushes.
     const double v_before = gap_.v;
     gap_.u = x;
-    velocity_after_step(model_.cor.has_value(), model_.cor.value_or(0.0), x_free < 0, v_before,
-                        v_scheme, gap_.v);
+    velocity_after_step(model_.cor.has_value(), model_.cor.value_or(0.0), fixed_point_, x_free < 0,
+                        v_before, v_scheme, gap_.v);
     flight_.start(l + 1, gap_);
+    if (flight_.constant_force()) repeats_.contact(l, gap_);
   }
   s = {phi + gap_.u, gap_.v};
   return info;

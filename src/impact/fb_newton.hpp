@@ -9,6 +9,8 @@
 
 #include "impact/free_flight.hpp"
 #include "impact/model.hpp"
+#include "impact/repeats.hpp"
+#include "impact/restitution.hpp"
 #include "impact/scheme_flight.hpp"
 
 namespace impact {
@@ -28,6 +30,7 @@ class FbNewton {
         h_(h),
         params_(params),
         sqrt_eps_(std::sqrt(params.epsilon)),
+        fixed_point_(model.cor ? restitution_fixed_point(*model.cor) : -1),
         flight_(model, h) {}
 
   // Works in gap coordinates (u - phi, v) from here on, see do_step.
@@ -37,15 +40,25 @@ class FbNewton {
   // Why the last step did not converge: the residual it reached, for simulate()'s message.
   std::string failure_reason() const;
 
+  // Repeating steps (repeats.hpp), under a constant force: the steps after a contact step depend
+  // on the state it ended in alone (the next free flight starts from it).
+  std::int64_t repeat_period() const { return repeats_.period(); }
+  void skip_steps(std::int64_t n) {
+    repeats_.skip(n);
+    flight_.start(repeats_.last_contact() + 1, repeats_.last_state());
+  }
+
  private:
   Model model_;
   double h_;
   FbNewtonParams params_;
-  double sqrt_eps_;      // the velocity scale of the smoothing, see step()
-  SchemeFlight flight_;  // in gap coordinates (u - phi, v), see do_step()
+  double sqrt_eps_;           // the velocity scale of the smoothing, see step()
+  std::int64_t fixed_point_;  // restitution_fixed_point of the COR, restitution.hpp
+  SchemeFlight flight_;       // in gap coordinates (u - phi, v), see do_step()
   // The state at t_l in gap coordinates as the last step computed it (the caller's u is
   // phi + gap, rounded).
   State gap_;
+  RepeatWatch repeats_;  // watches the contact steps under a constant force
   // The last Newton solve, for failure_reason().
   double residual_ = 0, threshold_ = 0, force_ = 0;
   int iterations_ = 0;

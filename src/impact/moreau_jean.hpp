@@ -11,6 +11,7 @@
 #include <type_traits>
 
 #include "impact/model.hpp"
+#include "impact/repeats.hpp"
 #include "impact/scheme_flight.hpp"
 
 namespace impact {
@@ -72,7 +73,13 @@ class BasicMoreauJean {
   void initialize(const State& s, std::int64_t l) {
     state_ = {s.u - phi_, s.v};
     if constexpr (TimeDependent) force_.seek(l);
+    if constexpr (!TimeDependent) repeats_.reset();
   }
+
+  // Repeating steps (repeats.hpp), under a constant force: a step depends on the state it starts
+  // from alone; contact steps are watched.
+  std::int64_t repeat_period() const requires(!TimeDependent) { return repeats_.period(); }
+  void skip_steps(std::int64_t n) requires(!TimeDependent) { repeats_.skip(n); }
 
   StepInfo do_step(State& s, std::int64_t l) {
     StepInfo info;
@@ -82,22 +89,25 @@ class BasicMoreauJean {
       moreau_jean_update(state_.u, state_.v, info.contact_force, v_free, e_, theta_, h_);
     } else {
       moreau_jean_step(state_.u, state_.v, info.contact_force, f_, e_, theta_, h_);
+      if (info.contact_force > 0) repeats_.contact(l, state_);
     }
     s = {phi_ + state_.u, state_.v};
     return info;
   }
 
  private:
-  // The constant force needs no state.
+  // The constant force needs no state; a time-dependent one does not repeat.
   struct NoForce {
     NoForce(const Model&, double) {}
   };
+  struct NoRepeats {};
 
   double phi_, f_;
   double h_;
   double theta_;
   double e_;
   State state_;  // (u - phi, v) at t_l
+  [[no_unique_address]] std::conditional_t<TimeDependent, NoRepeats, RepeatWatch> repeats_;
   [[no_unique_address]] std::conditional_t<TimeDependent, SchemeForce, NoForce> force_;
 };
 

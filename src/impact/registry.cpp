@@ -103,6 +103,7 @@ AnyStepper make_stepper(const Model& model, double h, const MethodParams& params
       [&](const auto& p) -> AnyStepper {
         using Params = std::decay_t<decltype(p)>;
         if constexpr (std::is_same_v<Params, DirectParams>) {
+          if (p.free_flight == FreeFlightForm::paper) return DirectAsPrinted(model, h, p);
           switch (force_kind(model)) {
             case ForceKind::constant:
               return Direct(model, h, p);

@@ -23,9 +23,11 @@ using MethodParams = std::variant<DirectParams, FbNewtonParams, MoreauJeanParams
                                   ExactParams, EventDrivenParams>;
 
 // DirectHarmonic, DirectTimeDependent and MoreauJeanTimeDependent are `direct` and `moreau_jean`
-// with a time-dependent force (direct.hpp says why more than one type).
-using AnyStepper = std::variant<Direct, FbNewton, MoreauJean, Penalty, ExactStepper, EventDriven,
-                                DirectHarmonic, DirectTimeDependent, MoreauJeanTimeDependent>;
+// with a time-dependent force, DirectAsPrinted `direct` with (5-1) as printed (direct.hpp says why
+// more than one type).
+using AnyStepper =
+    std::variant<Direct, FbNewton, MoreauJean, Penalty, ExactStepper, EventDriven, DirectHarmonic,
+                 DirectTimeDependent, MoreauJeanTimeDependent, DirectAsPrinted>;
 static_assert([]<class... S>(std::variant<S...>*) { return (Stepper<S> && ...); }(
                   static_cast<AnyStepper*>(nullptr)),
               "every method's stepper has the interface of stepper.hpp");

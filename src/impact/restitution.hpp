@@ -5,20 +5,46 @@
 // overwritten by v^{l+1} = -COR v^l, with v_b = v^l the last velocity before contact. A step that
 // ends exactly on the floor with N^l = 0 is not an impact yet: the impulse, and the COR, come in
 // the next step, as without COR. Without COR the scheme's own velocity (4-2) is kept.
+//
+// A particle resting on the floor takes a contact step at every step, so the rule multiplies v by
+// -COR again and again: v decays into the subnormal range and ends on a fixed point of the rounded
+// product (COR = 0.75: |v| = 2^-1073 = 2 units of 2^-1074, since 0.75 * 2 units rounds back to 2
+// units; the sign flips at each step). On Intel processors every multiply with a subnormal operand
+// or result takes a microcode assist (an Intel Xeon, family 6 model 167: 34 ns of CPU instead of
+// 0.5 ns, experiments/performance/README.md), which made a resting particle 10x as costly as a
+// flying one. So the rule does not form the product where it knows the result: for |v| at most
+// the largest subnormal fixed point of this COR (restitution_fixed_point), -COR v is -v bit for
+// bit, a sign flip. Every other v is multiplied as before; the results are the same bits.
 #pragma once
+
+#include <cstdint>
+#include <cstring>
 
 namespace impact {
 
-// Real is double (Mask = bool) or a vector of lanes (Mask its comparison result), so that direct
-// and its ensemble share this one rule (see direct.hpp). The result is written through `v_after`
-// because a function returning a vector type would change the ABI between instruction sets.
-// A comparison of vectors gives lanes of long under GCC and of long long under clang, so the
-// contact mask is converted to the type of has_cor (same size, same bits) before they are combined.
-template <class Real, class Mask, class Comparison>
-void velocity_after_step(const Mask& has_cor, const Real& cor,
+// The largest m < 2^52 such that the rounded product -COR v is -v, bit for bit, for every
+// v = +-k 2^-1074, k = 0..m (the subnormals and zero up to m units), as this processor rounds it;
+// -1 when not even +-0 maps to its negative (COR negative or not a number).
+std::int64_t restitution_fixed_point(double cor);
+
+// Real is double (Mask = bool, Bits = std::int64_t) or a vector of lanes (Mask and Bits its
+// integer vector), so that direct and its ensemble share this one rule (see direct.hpp). The
+// result is written through `v_after` because a function returning a vector type would change the
+// ABI between instruction sets. `fixed_point` is restitution_fixed_point(cor). A comparison of
+// vectors gives lanes of long under GCC and of long long under clang, so the contact mask is
+// converted to the type of has_cor (same size, same bits) before they are combined.
+template <class Real, class Mask, class Bits, class Comparison>
+void velocity_after_step(const Mask& has_cor, const Real& cor, const Bits& fixed_point,
                          const Comparison& contact_force_positive, const Real& v_before,
                          const Real& v_scheme, Real& v_after) {
-  v_after = (has_cor & (Mask)contact_force_positive) ? -cor * v_before : v_scheme;
+  // |v| as the bits of a double: an integer that orders like |v|.
+  Bits magnitude;
+  std::memcpy(&magnitude, &v_before, sizeof magnitude);
+  const auto fixed = (magnitude & 0x7fffffffffffffff) <= fixed_point;
+  // The product sees 0 instead of a fixed point, so that it never has a subnormal operand there.
+  const Real product = -cor * (fixed ? Real{} : v_before);
+  const Real restituted = fixed ? -v_before : product;
+  v_after = (has_cor & (Mask)contact_force_positive) ? restituted : v_scheme;
 }
 
 }  // namespace impact

@@ -3,7 +3,9 @@
 // O(1) memory (a CSV writer that decimates, an error accumulator, or nothing).
 #pragma once
 
+#include <array>
 #include <cmath>
+#include <concepts>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -13,6 +15,7 @@
 
 #include "impact/model.hpp"
 #include "impact/registry.hpp"
+#include "impact/repeats.hpp"
 #include "impact/stepper.hpp"
 
 namespace impact {
@@ -54,6 +57,56 @@ template <class S>
 
 namespace detail {
 
+// Step l's accounting: the finite-value and convergence check, the summary and the observer.
+// The check adds the three values and tests the sum (finite exactly when all three are, or one
+// overflowed, which the exact test then clears): one test instead of three (measured on an Intel
+// Xeon family 6 model 167: 3.2 -> 3.1 ns per direct step in free flight).
+template <class S, class Observer>
+[[gnu::always_inline]] inline void account(const S& stepper, std::int64_t l, const State& s,
+                                           const StepInfo& info, const Grid& grid,
+                                           RunSummary& summary, Observer& observe) {
+  if (!std::isfinite(s.u + s.v + info.contact_force) || !info.converged) [[unlikely]]
+    if (!(std::isfinite(s.u) && std::isfinite(s.v) && std::isfinite(info.contact_force)) ||
+        !info.converged)
+      throw_step_failure(stepper, l, grid.t(l), s, info);
+  summary.contact_steps += info.contact_force > 0;
+  summary.iterations += info.iterations;
+  summary.max_iterations =
+      info.iterations > summary.max_iterations ? info.iterations : summary.max_iterations;
+  observe(l + 1, s, info);
+}
+
+// The stepper's steps from l + 1 on repeat with period p (RepeatingSteps): takes one period,
+// recording it, then hands the observer the whole periods that fit before the end from the
+// record, without stepping, and moves the stepper on by them. Returns the last step taken or
+// handed on.
+template <class S, class Observer>
+[[gnu::always_inline]] inline std::int64_t repeat_steps(S& stepper, State& s, std::int64_t l,
+                                                        std::int64_t p, const Grid& grid,
+                                                        RunSummary& summary, Observer& observe) {
+  if (p > kMaxRepeatPeriod) return l;  // not kept: the loop steps on
+  std::array<std::pair<State, StepInfo>, kMaxRepeatPeriod> period;
+  std::int64_t contact_steps = 0, iterations = 0;  // in one period
+  for (std::int64_t k = 0; k < p; ++k) {
+    if (l + 1 == grid.steps) return l;
+    const StepInfo info = stepper.do_step(s, ++l);
+    account(stepper, l, s, info, grid, summary, observe);
+    period[static_cast<std::size_t>(k)] = {s, info};
+    contact_steps += info.contact_force > 0;
+    iterations += info.iterations;
+  }
+  const std::int64_t periods = (grid.steps - 1 - l) / p;
+  for (std::int64_t k = 0; k < periods; ++k)
+    for (std::int64_t j = 0; j < p; ++j) {
+      const auto& [state, info] = period[static_cast<std::size_t>(j)];
+      observe(l + 2 + k * p + j, state, info);
+    }
+  stepper.skip_steps(periods * p);
+  summary.contact_steps += periods * contact_steps;
+  summary.iterations += periods * iterations;
+  return l + periods * p;
+}
+
 template <Stepper S, class Observer>
 [[gnu::always_inline]] inline RunSummary step_loop(S& stepper, const State& initial,
                                                    const Grid& grid, Observer& observe) {
@@ -63,14 +116,10 @@ template <Stepper S, class Observer>
   observe(std::int64_t{0}, s, StepInfo{});
   for (std::int64_t l = 0; l < grid.steps; ++l) {
     const StepInfo info = stepper.do_step(s, l);
-    if (!(std::isfinite(s.u) && std::isfinite(s.v) && std::isfinite(info.contact_force)) ||
-        !info.converged) [[unlikely]]
-      throw_step_failure(stepper, l, grid.t(l), s, info);
-    summary.contact_steps += info.contact_force > 0;
-    summary.iterations += info.iterations;
-    summary.max_iterations =
-        info.iterations > summary.max_iterations ? info.iterations : summary.max_iterations;
-    observe(l + 1, s, info);
+    account(stepper, l, s, info, grid, summary, observe);
+    if constexpr (RepeatingSteps<S>)
+      if (const std::int64_t p = stepper.repeat_period(); p > 0) [[unlikely]]
+        l = repeat_steps(stepper, s, l, p, grid, summary, observe);
   }
   summary.steps = grid.steps;
   return summary;
@@ -98,7 +147,10 @@ concept StepsLocally = std::remove_cvref_t<Observer>::kStepsLocally;
 //  - the observer is inlined; it should do its rare work (a CSV row) out of line, on copies, so
 //    that nothing on its common path takes the address of the loop's state;
 //  - an observer that updates running values of its own at every step and says so (StepsLocally)
-//    is stepped as a local copy too, copied back when the run ends, for the same reason.
+//    is stepped as a local copy too, copied back when the run ends, for the same reason;
+//  - a stepper whose steps have begun to repeat (RepeatingSteps: a particle resting or chattering
+//    on the floor) is stepped through one period only; the observer sees the other periods from
+//    it, with the same bits, so that a long rest costs the observer's work alone.
 template <Stepper S, class Observer>
 [[gnu::noinline]] RunSummary simulate(S& stepper, const State& initial, const Grid& grid,
                                       Observer&& observe) {

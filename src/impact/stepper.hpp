@@ -38,4 +38,15 @@ concept ExplainsFailure = requires(const S& stepper) {
   { stepper.failure_reason() } -> std::convertible_to<std::string>;
 };
 
+// A stepper whose steps can repeat says so (optional; repeats.hpp): after do_step(s, l),
+// repeat_period() is p in 1..kMaxRepeatPeriod when the steps from l + 1 on repeat with period p,
+// states and infos bit for bit, else 0; skip_steps(n), n a multiple of p, moves the stepper on by
+// n steps as if it had taken them. simulate() then takes one period and hands the rest of the run
+// to the observer from it without stepping.
+template <class S>
+concept RepeatingSteps = Stepper<S> && requires(S& stepper, const S& c, std::int64_t n) {
+  { c.repeat_period() } -> std::convertible_to<std::int64_t>;
+  stepper.skip_steps(n);
+};
+
 }  // namespace impact
