@@ -12,10 +12,6 @@
 
 namespace impact {
 
-// 2^53: the largest step count T/h a scene may ask for, for which every l and l*h are exact in
-// double precision.
-inline constexpr double kMaxGridSteps = 9007199254740992.0;
-
 // Reads and validates a scene file; `overrides` are "table.key=value" strings (the value is read
 // as a TOML value, or as a string when it is a bare word) and `unsets` "table.key" or "table"
 // strings (each must be in the file), applied before validation, unsets first. Throws SceneError.

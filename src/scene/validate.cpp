@@ -6,7 +6,6 @@
 #include "impact/force.hpp"
 #include "impact/format.hpp"
 #include "impact/work_energy.hpp"
-#include "scene/read_scene.hpp"
 
 namespace impact {
 

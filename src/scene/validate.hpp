@@ -14,6 +14,10 @@
 
 namespace impact {
 
+// 2^53: the largest step count T/h a scene may ask for, for which every l and l*h are exact in
+// double precision.
+inline constexpr double kMaxGridSteps = 9007199254740992.0;
+
 // What is wrong with table.key; with_value: the message shows the key's value before `what`
 // ("time.h = 5: must be <= time.T = 1"), else only the key ("output.channels: E: ...").
 struct SceneIssue {
