@@ -27,6 +27,9 @@ const MethodInfo kMethods[] = {
     {"event_driven", false, true,
      "event-driven solution for any f(t): GSL odeiv2 rk8pd between certified impacts",
      EventDrivenParams{}},
+    {"direct_located", false, true,
+     "(5-1) with each impact located inside its step and the rest of the step flown after it",
+     DirectLocatedParams{}},
 };
 static_assert(std::size(kMethods) == std::variant_size_v<MethodParams>);
 
@@ -79,6 +82,8 @@ AnyStepper make_stepper(const Model& model, double h, const MethodParams& params
         if constexpr (std::is_same_v<Params, PenaltyParams>) return Penalty(model, h, p);
         if constexpr (std::is_same_v<Params, ExactParams>) return ExactStepper(model, h, p);
         if constexpr (std::is_same_v<Params, EventDrivenParams>) return EventDriven(model, h, p);
+        if constexpr (std::is_same_v<Params, DirectLocatedParams>)
+          return DirectLocated(model, h, p);
       },
       params);
 }

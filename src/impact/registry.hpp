@@ -17,6 +17,7 @@
 #include <variant>
 
 #include "impact/direct.hpp"
+#include "impact/direct_located.hpp"
 #include "impact/event_driven.hpp"
 #include "impact/exact.hpp"
 #include "impact/fb_newton.hpp"
@@ -28,12 +29,13 @@ namespace impact {
 
 // One method and its parameters: what a scene's [method] table says.
 using MethodParams = std::variant<DirectParams, FbNewtonParams, MoreauJeanParams, PenaltyParams,
-                                  ExactParams, EventDrivenParams>;
+                                  ExactParams, EventDrivenParams, DirectLocatedParams>;
 
 // DirectHarmonic, DirectTimeDependent and MoreauJeanTimeDependent are `direct` and `moreau_jean`
 // with a time-dependent force (direct.hpp says why more than one type).
-using AnyStepper = std::variant<Direct, FbNewton, MoreauJean, Penalty, ExactStepper, EventDriven,
-                                DirectHarmonic, DirectTimeDependent, MoreauJeanTimeDependent>;
+using AnyStepper =
+    std::variant<Direct, FbNewton, MoreauJean, Penalty, ExactStepper, EventDriven, DirectHarmonic,
+                 DirectTimeDependent, MoreauJeanTimeDependent, DirectLocated>;
 
 struct MethodInfo {
   std::string_view name;
