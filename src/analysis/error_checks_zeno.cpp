@@ -1,0 +1,176 @@
+// Statement 3 (many impacts, f < 0, COR e) of paper_notes/error_analysis.md checked on one scene's
+// runs, and the exactness of direct_located under a constant force.
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "analysis/error_bounds.hpp"
+#include "analysis/error_checks.hpp"
+#include "impact/contact.hpp"
+#include "impact/direct_located.hpp"
+#include "impact/exact.hpp"
+
+namespace impact {
+namespace {
+
+constexpr double kUnit = 0x1p-53;
+
+// A contact episode of a run: its first step, its length, where the scheme's own flight reaches
+// the floor in that step (t_l + tau) and the velocity after the step (the relaunch speed W_k).
+struct Episode {
+  std::size_t first = 0, steps = 0;
+  double landing = 0, theta = 0, relaunch = 0;
+};
+
+std::vector<Episode> episodes(const SceneRuns& r, const Trace& t) {
+  const Model& m = r.scene.scene.model;
+  const double h = r.scene.scene.grid.h;
+  std::vector<Episode> out;
+  bool in = false;
+  for (std::size_t l = 0; l + 1 < t.s.size(); ++l) {
+    // A contact step whose flight reaches the floor: fb_newton's smoothing also makes a step that
+    // ends within sqrt(eps / 2) above the floor a contact step, with no impact in it.
+    const FloorArrival a = floor_arrival({r.gap(t, l), t.s[l].v}, m.f);
+    const bool contact =
+        is_contact_step(m, t.s[l + 1], t.N[l + 1]) && a.found && a.tau <= h * (1 + 1e-9);
+    if (contact && !in) {
+      Episode e;
+      e.first = l;
+      e.theta = a.found ? std::fmin(a.tau / h, 1.0) : 0.0;
+      e.landing = (static_cast<double>(l) + e.theta) * h;
+      e.relaunch = t.s[l + 1].v;
+      out.push_back(e);
+    }
+    if (contact) ++out.back().steps;
+    in = contact;
+  }
+  return out;
+}
+
+double sup_error(const SceneRuns& r, const Trace& t) {
+  double worst = 0;
+  for (std::size_t l = 0; l < t.s.size(); ++l)
+    worst = std::fmax(worst, std::fabs(t.s[l].u - r.exact.s[l].u));
+  return worst;
+}
+
+// Theorem 3.1-3.3 on one run of direct (proved, with the identities of their proofs) or of
+// fb_newton (Conjecture 3.4: the same bounds, up to its smoothing).
+void check_bouncing(const SceneRuns& r, const std::string& p, const Trace& t, bool smoothing,
+                    std::vector<Check>& out) {
+  const Scene& scene = r.scene.scene;
+  const Model& m = scene.model;
+  const double h = scene.grid.h, g = -m.f, e = r.cor(), t_end = scene.grid.end();
+  const ExactSolution exact(m, scene.initial);
+  const auto t1 = exact.impact_time(1);
+  const auto V1 = exact.impact_speed(1);
+  if (!t1 || !V1 || !(*V1 > 0)) return;
+  const std::vector<Episode> found = episodes(r, t);
+  Rounding rd = r.rounding;
+  if (smoothing) {
+    // fb_newton's contact steps stop up to h sqrt(eps) / 2 above the floor, and its free flights
+    // carry the kicks of Lemma 1.3: here their sum over the run as fb_newton reports them (the
+    // h N^l of its steps without an impact), acting for up to T.
+    double kicks = 0;
+    for (std::size_t l = 0; l + 1 < t.s.size(); ++l)
+      if (!(t.s[l + 1].u - m.phi == 0)) kicks += h * t.N[l + 1];
+    rd.position += h * std::sqrt(r.eps) / 2 + t_end * kicks;
+    rd.velocity += kicks;
+  }
+  // The worst impact of the run for each quantity, by measured / (bound + allowance).
+  struct Worst {
+    double score = -1;
+    Check check;
+    void offer(const Check& c) {
+      const double s = c.measured / (c.bound + c.allowance);
+      if (s > score) score = s, check = c;
+    }
+  } timing, timing_identity, speed, speed_identity;
+  // The identities' running sums: delta_{k+1} = delta_k + (1 - theta_k) h + 2 eps_k / g,
+  // eps_k = e eps_{k-1} - e g theta_k h; and the rounding they carry through the thetas, each
+  // known to allow_t / h (a landing time's rounding).
+  double drift = 0, deficit = 0, drift_round = 0, deficit_round = 0;
+  for (std::size_t k = 1; k <= found.size(); ++k) {
+    const Episode& ep = found[k - 1];
+    const auto tk = exact.impact_time(static_cast<std::int64_t>(k));
+    const auto Vk = exact.impact_speed(static_cast<std::int64_t>(k));
+    if (!tk || !Vk || *tk > t_end || ep.landing > t_end) break;
+    const double allow_t =
+        rd.time(std::fmin(*Vk, std::fabs(t.s[ep.first].v))) + 8 * kUnit * (*tk + h);
+    if (k >= 2) {
+      const double dk = ep.landing - *tk;
+      timing.offer(make_check(r, p + ".timing", std::fabs(dk),
+                              h * timing_factor(e, static_cast<std::int64_t>(k)), allow_t));
+      if (!smoothing)
+        timing_identity.offer(
+            make_check(r, p + ".timing_identity", std::fabs(dk - drift), 0, allow_t + drift_round));
+    }
+    deficit = e * deficit - e * g * ep.theta * h;
+    deficit_round = e * deficit_round + e * g * allow_t + rd.velocity;
+    drift += (1 - ep.theta) * h + 2 * deficit / g;
+    drift_round += allow_t + 2 * deficit_round / g;
+    const bool bounces = ep.steps == 1 && k < found.size();
+    if (!bounces) break;  // from here on the scheme rests
+    const double eps_k = ep.relaunch - e * *Vk;
+    speed.offer(make_check(r, p + ".speed", std::fabs(eps_k),
+                           speed_bound(g, h, e, static_cast<std::int64_t>(k)), rd.velocity));
+    if (!smoothing)
+      speed_identity.offer(make_check(r, p + ".speed_identity", std::fabs(eps_k - deficit), 0,
+                                      deficit_round + rd.velocity));
+  }
+  for (const Worst* w : {&timing, &timing_identity, &speed, &speed_identity})
+    if (w->score >= 0) out.push_back(w->check);
+  const ZenoData data{*t1, *V1, g, e, h, t_end};
+  const double bound = sup_bound(data);
+  if (std::isfinite(bound))
+    out.push_back(
+        make_check(r, p + ".sup", sup_error(r, t), bound, rd.position + t_end * rd.velocity));
+  // Rest: the run ends in a contact episode of at least kMinRestSteps steps.
+  const auto rest = exact.rest_time();
+  if (e >= 1 || found.empty() || !rest || *rest > t_end) return;
+  const Episode& last = found.back();
+  if (last.first + last.steps + 1 != t.s.size() ||
+      last.steps < static_cast<std::size_t>(kMinRestSteps))
+    return;
+  const double s_K = static_cast<double>(last.first + 1) * h;
+  out.push_back(make_check(r, p + ".rest", std::fabs(s_K - *rest), rest_bound(data),
+                           drift_round + 8 * kUnit * t_end));
+  out.push_back(make_check(r, p + ".impacts", static_cast<double>(found.size()),
+                           static_cast<double>(max_impacts(*V1, g, h, e)), 0));
+}
+
+}  // namespace
+
+void check_zeno(const SceneRuns& r, std::vector<Check>& out) {
+  const Model& m = r.scene.scene.model;
+  if (r.scene.kind != CampaignKind::zeno || !m.cor || !(m.f < 0)) return;
+  if (!r.direct.failed) check_bouncing(r, "s3.direct", r.direct, false, out);
+  if (!r.fb_newton.failed) check_bouncing(r, "s3.fb_newton", r.fb_newton, true, out);
+  if (!r.moreau_jean.failed) {
+    const ExactSolution exact(m, r.scene.scene.initial);
+    const auto t1 = exact.impact_time(1);
+    const auto V1 = exact.impact_speed(1);
+    // Conjecture 3.5 is for a first bounce that the grid resolves: 2 V_1 / g >= 2 h.
+    if (t1 && V1 && *V1 >= -m.f * r.scene.scene.grid.h) {
+      const Scene& s = r.scene.scene;
+      const double bound =
+          moreau_jean_sup_conjecture({*t1, *V1, -m.f, r.cor(), s.grid.h, s.grid.end()});
+      if (std::isfinite(bound))
+        out.push_back(
+            make_check(r, "s3.moreau_jean.sup", sup_error(r, r.moreau_jean), bound,
+                       r.rounding.stepped_position + s.grid.end() * r.rounding.stepped_velocity));
+    }
+  }
+}
+
+void check_located(const SceneRuns& r, std::vector<Check>& out) {
+  if (r.scene.scene.model.harmonic || r.located.failed) return;
+  const ExactSolution exact(r.scene.scene.model, r.scene.scene.initial);
+  const double impacts = static_cast<double>(
+      std::min<std::int64_t>(exact.impacts_until(r.scene.scene.grid.end()), 1 << 20));
+  out.push_back(make_check(r, "located.direct_located.exact", sup_error(r, r.located), 0,
+                           r.rounding.position * (1 + impacts)));
+}
+
+}  // namespace impact
