@@ -55,6 +55,7 @@ struct Check {
   double h = 0;
   double measured = 0, bound = 0, allowance = 0;
   bool lower = false;
+  double x = 0;  // the statement's variable (theta, sigma, the impact k); NaN when none
   bool violated() const {
     return lower ? measured < bound - allowance : measured > bound + allowance;
   }

@@ -75,7 +75,7 @@ std::optional<std::size_t> SceneRuns::first_crossing(const Trace& t) const {
 }
 
 Check make_check(const SceneRuns& r, std::string name, double measured, double bound,
-                 double allowance, bool lower) {
+                 double allowance, double x, bool lower) {
   Check c;
   c.name = std::move(name);
   c.scene = r.index;
@@ -84,6 +84,7 @@ Check make_check(const SceneRuns& r, std::string name, double measured, double b
   c.bound = bound;
   c.allowance = allowance;
   c.lower = lower;
+  c.x = x;
   return c;
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -53,6 +54,25 @@ struct KickSum {
 };
 KickSum kicks_before(const SceneRuns& r, std::size_t end);
 
+// Statement 3 on one run, impact by impact (f < 0, a COR): the landing time's error
+// delta_k = t_k^h - t_k with Theorem 3.1's bound and the value its proof's identity gives from
+// the run's own thetas, and the relaunch speed's error eps_k = W_k - e V_k likewise; the rounding
+// each carries.
+struct ImpactRecord {
+  std::int64_t k = 0;
+  double theta = 0;
+  double delay = 0, delay_bound = 0, delay_round = 0, delay_identity = 0, delay_identity_round = 0;
+  bool relaunched = false;  // the scheme bounced off (else it rests from this impact on)
+  double speed = 0, speed_bound = 0, speed_identity = 0, speed_identity_round = 0;
+};
+struct BouncingRun {
+  std::vector<ImpactRecord> impacts;
+  std::optional<double> rest;  // the scheme's rest s_K, when it rests before T (Theorem 3.3)
+  double rest_round = 0;
+  std::int64_t impacts_before_rest = 0;
+};
+BouncingRun bouncing_run(const SceneRuns& r, const Trace& t, const Rounding& rounding);
+
 void check_flight(const SceneRuns& r, std::vector<Check>& out);   // Statement 1
 void check_impact(const SceneRuns& r, std::vector<Check>& out);   // Statement 2
 void check_no_cor(const SceneRuns& r, std::vector<Check>& out);   // Statement 4
@@ -60,7 +80,9 @@ void check_zeno(const SceneRuns& r, std::vector<Check>& out);     // Statement 3
 void check_located(const SceneRuns& r, std::vector<Check>& out);  // exactness of the variant
 
 // A check named `name` on the run's scene.
+// x: the statement's variable at this check (theta, sigma, the impact k), NaN when none.
 Check make_check(const SceneRuns& r, std::string name, double measured, double bound,
-                 double allowance, bool lower = false);
+                 double allowance, double x = std::numeric_limits<double>::quiet_NaN(),
+                 bool lower = false);
 
 }  // namespace impact

@@ -68,25 +68,27 @@ void check_direct_cor(const SceneRuns& r, const char* name, const Trace& trace, 
     const double allow = rd.time(-before.v) + 8 * kUnit * i->t1 +
                          (kicks.position + i->h * kicks.velocity) / -before.v;
     out.push_back(make_check(r, p + ".time", std::fabs(crossing - i->t1),
-                             linear_crossing_bound(i->V, i->f, i->h), allow));
+                             linear_crossing_bound(i->V, i->f, i->h), allow, i->theta));
     if (!ambiguous(i->theta))
       out.push_back(make_check(
           r, p + ".time_identity",
-          std::fabs(crossing - i->t1 - linear_crossing_error(i->V, i->theta, i->f, i->h)), 0,
-          allow));
+          std::fabs(crossing - i->t1 - linear_crossing_error(i->V, i->theta, i->f, i->h)), 0, allow,
+          i->theta));
   }
   if (!in_first_flight(*i, (1 - i->theta) * i->h)) return;
   const double du = trace.s[l + 1].u - r.exact.s[l + 1].u;
   const double dv = trace.s[l + 1].v - r.exact.s[l + 1].v;
   const ImpactError bound = direct_cor_impact_bound(i->V, i->f, i->h, i->e);
-  out.push_back(make_check(r, p + ".du", std::fabs(du), bound.du, rd.position + smooth_u));
-  out.push_back(make_check(r, p + ".dv", std::fabs(dv), bound.dv, rd.velocity + smooth_v));
+  out.push_back(
+      make_check(r, p + ".du", std::fabs(du), bound.du, rd.position + smooth_u, i->theta));
+  out.push_back(
+      make_check(r, p + ".dv", std::fabs(dv), bound.dv, rd.velocity + smooth_v, i->theta));
   if (ambiguous(i->theta)) return;
   const ImpactError id = direct_cor_impact(i->V, i->theta, i->f, i->h, i->e);
   out.push_back(make_check(r, p + ".du_identity", std::fabs(du - id.du), 0,
-                           rd.position + rd.time(i->V) * i->V + smooth_u));
-  out.push_back(
-      make_check(r, p + ".dv_identity", std::fabs(dv - id.dv), 0, rd.velocity + smooth_v));
+                           rd.position + rd.time(i->V) * i->V + smooth_u, i->theta));
+  out.push_back(make_check(r, p + ".dv_identity", std::fabs(dv - id.dv), 0, rd.velocity + smooth_v,
+                           i->theta));
 }
 
 void check_moreau_jean(const SceneRuns& r, std::vector<Check>& out) {
@@ -102,17 +104,19 @@ void check_moreau_jean(const SceneRuns& r, std::vector<Check>& out) {
   if (!(i.V >= 2 * std::fabs(i.f) * i.h)) return;
   const Rounding& rd = r.rounding;
   out.push_back(make_check(r, "s2.moreau_jean.sigma", std::fabs(i.theta),
-                           moreau_jean_sigma_bound(i.V, i.f, i.h), kAmbiguous));
+                           moreau_jean_sigma_bound(i.V, i.f, i.h), kAmbiguous, i.theta));
   if (!in_first_flight(i, (1 - i.theta) * i.h)) return;
   const double du = trace.s[m + 1].u - r.exact.s[m + 1].u;
   const double dv = trace.s[m + 1].v - r.exact.s[m + 1].v;
   const ImpactError bound = moreau_jean_impact_bound(i.V, i.f, i.h, i.e);
-  out.push_back(make_check(r, "s2.moreau_jean.du", std::fabs(du), bound.du, rd.stepped_position));
-  out.push_back(make_check(r, "s2.moreau_jean.dv", std::fabs(dv), bound.dv, rd.stepped_velocity));
+  out.push_back(
+      make_check(r, "s2.moreau_jean.du", std::fabs(du), bound.du, rd.stepped_position, i.theta));
+  out.push_back(
+      make_check(r, "s2.moreau_jean.dv", std::fabs(dv), bound.dv, rd.stepped_velocity, i.theta));
   if (ambiguous(std::fabs(i.theta - 0.5))) return;  // activation decided by rounding
   const ImpactError id = moreau_jean_impact(i.V, i.theta, i.f, i.h, i.e);
   out.push_back(make_check(r, "s2.moreau_jean.du_identity", std::fabs(du - id.du), 0,
-                           rd.stepped_position + rd.time(i.V) * i.V));
+                           rd.stepped_position + rd.time(i.V) * i.V, i.theta));
   out.push_back(
       make_check(r, "s2.moreau_jean.dv_identity", std::fabs(dv - id.dv), 0, rd.stepped_velocity));
 }
@@ -188,7 +192,7 @@ void check_no_cor(const SceneRuns& r, std::vector<Check>& out) {
       out.push_back(
           make_check(r, p + ".rebound_identity",
                      std::fabs(rebound - direct_scheme_rebound(i->V, i->theta, i->f, i->h)), 0,
-                     r.rounding.rebound + smooth_v));
+                     r.rounding.rebound + smooth_v, i->theta));
     // The speed the particle leaves the floor with: at t_{l+1}, or at t_{l+2} when the contact
     // step's velocity points down (the next step is a contact step too).
     const double leave = rebound > 0 ? rebound : s.trace.s[i->l + 2].v;
@@ -201,7 +205,8 @@ void check_no_cor(const SceneRuns& r, std::vector<Check>& out) {
       const double t_n = r.scene.scene.grid.end();
       out.push_back(make_check(r, p + ".lower_bound", std::fabs(s.trace.s[n].u - r.exact.s[n].u),
                                no_cor_lower_bound(i->V, theta, i->t1, t_n),
-                               r.rounding.position + t_n * (r.rounding.rebound + smooth_v), true));
+                               r.rounding.position + t_n * (r.rounding.rebound + smooth_v), theta,
+                               true));
     }
   }
 }

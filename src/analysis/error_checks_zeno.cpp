@@ -29,11 +29,12 @@ std::vector<Episode> episodes(const SceneRuns& r, const Trace& t) {
   std::vector<Episode> out;
   bool in = false;
   for (std::size_t l = 0; l + 1 < t.s.size(); ++l) {
-    // A contact step whose flight reaches the floor: fb_newton's smoothing also makes a step that
-    // ends within sqrt(eps / 2) above the floor a contact step, with no impact in it.
+    // A contact step whose flight reaches the floor within two steps: fb_newton's smoothing also
+    // makes a step that ends within sqrt(eps / 2) above the floor a contact step, with no impact in
+    // it when it flies on; just before an impact (and where rounding moves a landing on a grid
+    // point past it) the impact follows in the next step and the episode starts here.
     const FloorArrival a = floor_arrival({r.gap(t, l), t.s[l].v}, m.f);
-    const bool contact =
-        is_contact_step(m, t.s[l + 1], t.N[l + 1]) && a.found && a.tau <= h * (1 + 1e-9);
+    const bool contact = is_contact_step(m, t.s[l + 1], t.N[l + 1]) && a.found && a.tau <= 2 * h;
     if (contact && !in) {
       Episode e;
       e.first = l;
@@ -55,6 +56,21 @@ double sup_error(const SceneRuns& r, const Trace& t) {
   return worst;
 }
 
+Rounding with_smoothing(const SceneRuns& r, const Trace& t) {
+  // fb_newton's contact steps stop up to h sqrt(eps) / 2 above the floor, and its free flights
+  // carry the kicks of Lemma 1.3: here their sum over the run as fb_newton reports them (the
+  // h N^l of its steps that do not end on the floor), acting for up to T.
+  const Scene& scene = r.scene.scene;
+  const double h = scene.grid.h;
+  double kicks = 0;
+  for (std::size_t l = 0; l + 1 < t.s.size(); ++l)
+    if (!(t.s[l + 1].u - scene.model.phi == 0)) kicks += h * t.N[l + 1];
+  Rounding rd = r.rounding;
+  rd.position += h * std::sqrt(r.eps) / 2 + scene.grid.end() * kicks;
+  rd.velocity += kicks;
+  return rd;
+}
+
 // Theorem 3.1-3.3 on one run of direct (proved, with the identities of their proofs) or of
 // fb_newton (Conjecture 3.4: the same bounds, up to its smoothing).
 void check_bouncing(const SceneRuns& r, const std::string& p, const Trace& t, bool smoothing,
@@ -66,18 +82,8 @@ void check_bouncing(const SceneRuns& r, const std::string& p, const Trace& t, bo
   const auto t1 = exact.impact_time(1);
   const auto V1 = exact.impact_speed(1);
   if (!t1 || !V1 || !(*V1 > 0)) return;
-  const std::vector<Episode> found = episodes(r, t);
-  Rounding rd = r.rounding;
-  if (smoothing) {
-    // fb_newton's contact steps stop up to h sqrt(eps) / 2 above the floor, and its free flights
-    // carry the kicks of Lemma 1.3: here their sum over the run as fb_newton reports them (the
-    // h N^l of its steps without an impact), acting for up to T.
-    double kicks = 0;
-    for (std::size_t l = 0; l + 1 < t.s.size(); ++l)
-      if (!(t.s[l + 1].u - m.phi == 0)) kicks += h * t.N[l + 1];
-    rd.position += h * std::sqrt(r.eps) / 2 + t_end * kicks;
-    rd.velocity += kicks;
-  }
+  const Rounding rd = smoothing ? with_smoothing(r, t) : r.rounding;
+  const BouncingRun run = bouncing_run(r, t, rd);
   // The worst impact of the run for each quantity, by measured / (bound + allowance).
   struct Worst {
     double score = -1;
@@ -87,6 +93,46 @@ void check_bouncing(const SceneRuns& r, const std::string& p, const Trace& t, bo
       if (s > score) score = s, check = c;
     }
   } timing, timing_identity, speed, speed_identity;
+  for (const ImpactRecord& i : run.impacts) {
+    const auto x = static_cast<double>(i.k);
+    if (i.k >= 2) {
+      timing.offer(
+          make_check(r, p + ".timing", std::fabs(i.delay), i.delay_bound, i.delay_round, x));
+      if (!smoothing)
+        timing_identity.offer(make_check(r, p + ".timing_identity",
+                                         std::fabs(i.delay - i.delay_identity), 0,
+                                         i.delay_identity_round, x));
+    }
+    if (!i.relaunched) continue;
+    speed.offer(make_check(r, p + ".speed", std::fabs(i.speed), i.speed_bound, rd.velocity, x));
+    if (!smoothing)
+      speed_identity.offer(make_check(r, p + ".speed_identity",
+                                      std::fabs(i.speed - i.speed_identity), 0,
+                                      i.speed_identity_round, x));
+  }
+  for (const Worst* w : {&timing, &timing_identity, &speed, &speed_identity})
+    if (w->score >= 0) out.push_back(w->check);
+  const ZenoData data{*t1, *V1, g, e, h, t_end};
+  const double bound = sup_bound(data);
+  if (std::isfinite(bound))
+    out.push_back(
+        make_check(r, p + ".sup", sup_error(r, t), bound, rd.position + t_end * rd.velocity));
+  if (!run.rest || !exact.rest_time()) return;
+  out.push_back(make_check(r, p + ".rest", std::fabs(*run.rest - *exact.rest_time()),
+                           rest_bound(data), run.rest_round));
+  out.push_back(make_check(r, p + ".impacts", static_cast<double>(run.impacts_before_rest),
+                           static_cast<double>(max_impacts(*V1, g, h, e)), 0));
+}
+
+}  // namespace
+
+BouncingRun bouncing_run(const SceneRuns& r, const Trace& t, const Rounding& rd) {
+  const Scene& scene = r.scene.scene;
+  const Model& m = scene.model;
+  const double h = scene.grid.h, g = -m.f, e = r.cor(), t_end = scene.grid.end();
+  const ExactSolution exact(m, scene.initial);
+  const std::vector<Episode> found = episodes(r, t);
+  BouncingRun run;
   // The identities' running sums: delta_{k+1} = delta_k + (1 - theta_k) h + 2 eps_k / g,
   // eps_k = e eps_{k-1} - e g theta_k h; and the rounding they carry through the thetas, each
   // known to allow_t / h (a landing time's rounding).
@@ -96,51 +142,41 @@ void check_bouncing(const SceneRuns& r, const std::string& p, const Trace& t, bo
     const auto tk = exact.impact_time(static_cast<std::int64_t>(k));
     const auto Vk = exact.impact_speed(static_cast<std::int64_t>(k));
     if (!tk || !Vk || *tk > t_end || ep.landing > t_end) break;
+    ImpactRecord i;
+    i.k = static_cast<std::int64_t>(k);
+    i.theta = ep.theta;
     const double allow_t =
         rd.time(std::fmin(*Vk, std::fabs(t.s[ep.first].v))) + 8 * kUnit * (*tk + h);
-    if (k >= 2) {
-      const double dk = ep.landing - *tk;
-      timing.offer(make_check(r, p + ".timing", std::fabs(dk),
-                              h * timing_factor(e, static_cast<std::int64_t>(k)), allow_t));
-      if (!smoothing)
-        timing_identity.offer(
-            make_check(r, p + ".timing_identity", std::fabs(dk - drift), 0, allow_t + drift_round));
-    }
+    i.delay = ep.landing - *tk;
+    i.delay_bound = h * timing_factor(e, i.k);
+    i.delay_round = allow_t;
+    i.delay_identity = drift;
+    i.delay_identity_round = allow_t + drift_round;
     deficit = e * deficit - e * g * ep.theta * h;
     deficit_round = e * deficit_round + e * g * allow_t + rd.velocity;
     drift += (1 - ep.theta) * h + 2 * deficit / g;
     drift_round += allow_t + 2 * deficit_round / g;
-    const bool bounces = ep.steps == 1 && k < found.size();
-    if (!bounces) break;  // from here on the scheme rests
-    const double eps_k = ep.relaunch - e * *Vk;
-    speed.offer(make_check(r, p + ".speed", std::fabs(eps_k),
-                           speed_bound(g, h, e, static_cast<std::int64_t>(k)), rd.velocity));
-    if (!smoothing)
-      speed_identity.offer(make_check(r, p + ".speed_identity", std::fabs(eps_k - deficit), 0,
-                                      deficit_round + rd.velocity));
+    // A bounce: one contact step, and the run goes on; else the scheme rests from here on.
+    i.relaunched = ep.steps == 1 && k < found.size();
+    i.speed = ep.relaunch - e * *Vk;
+    i.speed_bound = speed_bound(g, h, e, i.k);
+    i.speed_identity = deficit;
+    i.speed_identity_round = deficit_round + rd.velocity;
+    run.impacts.push_back(i);
+    if (!i.relaunched) break;
   }
-  for (const Worst* w : {&timing, &timing_identity, &speed, &speed_identity})
-    if (w->score >= 0) out.push_back(w->check);
-  const ZenoData data{*t1, *V1, g, e, h, t_end};
-  const double bound = sup_bound(data);
-  if (std::isfinite(bound))
-    out.push_back(
-        make_check(r, p + ".sup", sup_error(r, t), bound, rd.position + t_end * rd.velocity));
-  // Rest: the run ends in a contact episode of at least kMinRestSteps steps.
+  // Rest: the run ends in a contact episode of at least kMinRestSteps steps, before T.
   const auto rest = exact.rest_time();
-  if (e >= 1 || found.empty() || !rest || *rest > t_end) return;
+  if (e >= 1 || found.empty() || !rest || *rest > t_end) return run;
   const Episode& last = found.back();
   if (last.first + last.steps + 1 != t.s.size() ||
       last.steps < static_cast<std::size_t>(kMinRestSteps))
-    return;
-  const double s_K = static_cast<double>(last.first + 1) * h;
-  out.push_back(make_check(r, p + ".rest", std::fabs(s_K - *rest), rest_bound(data),
-                           drift_round + 8 * kUnit * t_end));
-  out.push_back(make_check(r, p + ".impacts", static_cast<double>(found.size()),
-                           static_cast<double>(max_impacts(*V1, g, h, e)), 0));
+    return run;
+  run.rest = static_cast<double>(last.first + 1) * h;
+  run.rest_round = drift_round + 8 * kUnit * t_end;
+  run.impacts_before_rest = static_cast<std::int64_t>(found.size());
+  return run;
 }
-
-}  // namespace
 
 void check_zeno(const SceneRuns& r, std::vector<Check>& out) {
   const Model& m = r.scene.scene.model;
