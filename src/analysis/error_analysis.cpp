@@ -4,6 +4,8 @@
 #include <sstream>
 #include <string>
 
+#include "analysis/error_sweeps.hpp"
+
 namespace impact {
 namespace {
 
@@ -70,6 +72,7 @@ toml::table run_error_analysis(const ExperimentContext& context,
   context.write("campaign.csv", [&] { return campaign_csv(campaign); });
   context.write("checks.md", [&] { return checks_markdown(campaign); });
   toml::table summary{{"campaign", campaign_table(campaign)}};
+  if (options.sweeps) summary.insert("sweeps", run_sweeps(context, options.sweep));
   return summary;
 }
 

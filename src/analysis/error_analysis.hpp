@@ -8,6 +8,7 @@
 #include <toml++/toml.h>
 
 #include "analysis/error_campaign.hpp"
+#include "analysis/error_sweeps.hpp"
 #include "analysis/experiment.hpp"
 
 namespace impact {
@@ -15,6 +16,7 @@ namespace impact {
 struct ErrorAnalysisOptions {
   CampaignOptions campaign;
   bool sweeps = true;  // false: the campaign alone
+  SweepOptions sweep;
 };
 
 // Writes campaign.csv (every check), checks.md (the summary table) and the sweeps' files to the

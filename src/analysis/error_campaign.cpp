@@ -37,7 +37,7 @@ bool is_conjecture(std::string_view name) {
   return name.starts_with("s3.fb_newton.") || name.starts_with("s3.moreau_jean.");
 }
 
-void check_scene(const CampaignScene& scene, std::size_t index, std::vector<Check>& out) {
+SceneRuns run_scene_runs(const CampaignScene& scene, std::size_t index) {
   const Scene& s = scene.scene;
   SceneRuns r{scene, index, reference_trace(s), std::nullopt, {}, {}, {}, {}, {}, 0};
   if (constant_force(s.model)) r.V1 = ExactSolution(s.model, s.initial).impact_speed(1);
@@ -47,6 +47,11 @@ void check_scene(const CampaignScene& scene, std::size_t index, std::vector<Chec
   r.located = run_trace(with_method(s, DirectLocatedParams{}));
   r.rounding = rounding_of(s, r.exact);
   r.eps = FbNewtonParams{}.epsilon;
+  return r;
+}
+
+void check_scene(const CampaignScene& scene, std::size_t index, std::vector<Check>& out) {
+  const SceneRuns r = run_scene_runs(scene, index);
   check_flight(r, out);
   check_impact(r, out);
   check_zeno(r, out);

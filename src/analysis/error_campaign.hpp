@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -56,6 +57,9 @@ struct Check {
   double measured = 0, bound = 0, allowance = 0;
   bool lower = false;
   double x = 0;  // the statement's variable (theta, sigma, the impact k); NaN when none
+  // The signed quantity the check is about, where the figures want it (du, dv, the effective
+  // COR W / V); NaN elsewhere.
+  double value = std::numeric_limits<double>::quiet_NaN();
   bool violated() const {
     return lower ? measured < bound - allowance : measured > bound + allowance;
   }

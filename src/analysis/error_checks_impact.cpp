@@ -20,6 +20,11 @@ bool ambiguous(double theta) {
   return theta < kAmbiguous || theta > 1 - kAmbiguous;
 }
 
+Check with_value(Check c, double value) {
+  c.value = value;
+  return c;
+}
+
 // What Statement 2 needs of a scene: a constant force and a first impact inside the run, with a
 // positive speed; theta of the scheme's first contact step l.
 struct FirstImpact {
@@ -79,10 +84,10 @@ void check_direct_cor(const SceneRuns& r, const char* name, const Trace& trace, 
   const double du = trace.s[l + 1].u - r.exact.s[l + 1].u;
   const double dv = trace.s[l + 1].v - r.exact.s[l + 1].v;
   const ImpactError bound = direct_cor_impact_bound(i->V, i->f, i->h, i->e);
-  out.push_back(
-      make_check(r, p + ".du", std::fabs(du), bound.du, rd.position + smooth_u, i->theta));
-  out.push_back(
-      make_check(r, p + ".dv", std::fabs(dv), bound.dv, rd.velocity + smooth_v, i->theta));
+  out.push_back(with_value(
+      make_check(r, p + ".du", std::fabs(du), bound.du, rd.position + smooth_u, i->theta), du));
+  out.push_back(with_value(
+      make_check(r, p + ".dv", std::fabs(dv), bound.dv, rd.velocity + smooth_v, i->theta), dv));
   if (ambiguous(i->theta)) return;
   const ImpactError id = direct_cor_impact(i->V, i->theta, i->f, i->h, i->e);
   out.push_back(make_check(r, p + ".du_identity", std::fabs(du - id.du), 0,
@@ -109,11 +114,12 @@ void check_moreau_jean(const SceneRuns& r, std::vector<Check>& out) {
   const double du = trace.s[m + 1].u - r.exact.s[m + 1].u;
   const double dv = trace.s[m + 1].v - r.exact.s[m + 1].v;
   const ImpactError bound = moreau_jean_impact_bound(i.V, i.f, i.h, i.e);
-  out.push_back(
-      make_check(r, "s2.moreau_jean.du", std::fabs(du), bound.du, rd.stepped_position, i.theta));
-  out.push_back(
-      make_check(r, "s2.moreau_jean.dv", std::fabs(dv), bound.dv, rd.stepped_velocity, i.theta));
-  if (ambiguous(std::fabs(i.theta - 0.5))) return;  // activation decided by rounding
+  out.push_back(with_value(
+      make_check(r, "s2.moreau_jean.du", std::fabs(du), bound.du, rd.stepped_position, i.theta),
+      du));
+  out.push_back(with_value(
+      make_check(r, "s2.moreau_jean.dv", std::fabs(dv), bound.dv, rd.stepped_velocity, i.theta),
+      dv));
   const ImpactError id = moreau_jean_impact(i.V, i.theta, i.f, i.h, i.e);
   out.push_back(make_check(r, "s2.moreau_jean.du_identity", std::fabs(du - id.du), 0,
                            rd.stepped_position + rd.time(i.V) * i.V, i.theta));
@@ -197,9 +203,11 @@ void check_no_cor(const SceneRuns& r, std::vector<Check>& out) {
     // step's velocity points down (the next step is a contact step too).
     const double leave = rebound > 0 ? rebound : s.trace.s[i->l + 2].v;
     const double theta = std::clamp(i->theta, 0.0, 1.0);
-    out.push_back(make_check(
-        r, p + ".effective_cor", std::fabs(leave / i->V - std::fabs(1 - 2 * theta)),
-        std::fabs(i->f) * i->h / (4 * i->V), (2 * r.rounding.rebound + smooth_v) / i->V));
+    out.push_back(with_value(
+        make_check(r, p + ".effective_cor", std::fabs(leave / i->V - std::fabs(1 - 2 * theta)),
+                   std::fabs(i->f) * i->h / (4 * i->V), (2 * r.rounding.rebound + smooth_v) / i->V,
+                   theta),
+        leave / i->V));
     const std::size_t n = s.trace.s.size() - 1;
     if (i->f == 0 && n >= i->l + 2) {
       const double t_n = r.scene.scene.grid.end();
