@@ -79,7 +79,7 @@ struct CheckSummary {
 };
 
 struct CampaignOptions {
-  std::size_t scenes = 2400;
+  std::size_t scenes = 4800;
   std::uint64_t seed = 20130601;
 };
 

@@ -103,9 +103,7 @@ KickSum kicks_before(const SceneRuns& r, std::size_t end) {
   const double h = r.scene.scene.grid.h, t_end = static_cast<double>(end) * h;
   KickSum sum;
   for (std::size_t j = 0; j < end; ++j) {
-    // The kick and its rounding: Newton stops on the double nearest the root, so the gap is off
-    // by an ulp and the kick by 2 ulp(gap) / h (error_analysis.md, "Rounding").
-    const double k = kick(r, j) + 4 * kUnit * std::fabs(r.gap(r.exact, j + 1)) / h;
+    const double k = kick(r, j);
     sum.velocity += k;
     sum.position += k * (t_end - static_cast<double>(j) * h);
   }
@@ -149,11 +147,8 @@ void check_flight(const SceneRuns& r, std::vector<Check>& out) {
         const double k = kick(r, l);
         kicks += k;
         kicks_times += k * t;
-        // Newton stops on the double nearest the root: the gap is off by an ulp, the kick by
-        // 2 ulp(gap) / h (error_analysis.md, "Rounding").
-        const double k_round = 4 * kUnit * std::fabs(r.gap(r.exact, l + 1)) / h;
-        round_v += k_round;
-        round_times += k_round * t;
+        round_v += (kKickRounding - 1) * k;
+        round_times += (kKickRounding - 1) * k * t;
       }
       const double eu = std::fabs(s.trace.s[l].u - r.exact.s[l].u);
       const double ev = std::fabs(s.trace.s[l].v - r.exact.s[l].v);

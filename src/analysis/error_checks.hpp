@@ -50,8 +50,13 @@ SceneRuns run_scene_runs(const CampaignScene& scene, std::size_t index);
 // The velocity fb_newton's smoothing may add in free flight in step l (Lemma 1.3), from the exact
 // gap at t_{l+1}.
 double kick(const SceneRuns& r, std::size_t l);
-// The kicks of the steps before grid index `end`, with their rounding: the velocity they add, and
-// the position by t_end.
+// The kicks of the steps before grid index `end` (Lemma 1.3): the velocity they add, and the
+// position by t_end. Rounded, a kick is at most kKickRounding times its exact value.
+// Newton's last update rounds to the nearest double: an update below half an ulp of the gap leaves
+// it (no kick), a larger one lands within an ulp of the root, so a kick, at least ulp(gap) / h,
+// is off by at most 2 ulp(gap) / h: at most 3 times its exact value (error_analysis.md,
+// "Rounding").
+inline constexpr double kKickRounding = 3;
 struct KickSum {
   double velocity = 0, position = 0;
 };

@@ -64,14 +64,14 @@ void check_direct_cor(const SceneRuns& r, const char* name, const Trace& trace, 
   // the kicks of the flight before (Lemma 1.3), which the COR law scales by e.
   const KickSum kicks = smoothing ? kicks_before(r, l) : KickSum{};
   const double smooth_u = smoothing ? i->h * std::sqrt(r.eps) / 2 : 0.0;
-  const double smooth_v = smoothing ? i->e * kicks.velocity : 0.0;
+  const double smooth_v = smoothing ? kKickRounding * i->e * kicks.velocity : 0.0;
   // The time: the linear crossing t_l + g^l / |v^l|, Lemma 2.1 (c).
   const State& before = trace.s[l];
   if (before.v < 0 && i->V > std::fmax(0.0, -i->f) * i->h) {
     const double crossing = static_cast<double>(l) * i->h + r.gap(trace, l) / -before.v;
     // fb_newton's kicks raise g^l and |v^l| changes by at most their sum (Lemma 1.3).
     const double allow = rd.time(-before.v) + 8 * kUnit * i->t1 +
-                         (kicks.position + i->h * kicks.velocity) / -before.v;
+                         kKickRounding * (kicks.position + i->h * kicks.velocity) / -before.v;
     out.push_back(make_check(r, p + ".time", std::fabs(crossing - i->t1),
                              linear_crossing_bound(i->V, i->f, i->h), allow, i->theta));
     if (!ambiguous(i->theta))
@@ -192,7 +192,7 @@ void check_no_cor(const SceneRuns& r, std::vector<Check>& out) {
     // fb_newton: its contact step's velocity is within sqrt(eps) of direct's (Lemma 2.2), its v^l
     // and the free flight to it carry the kicks before (Lemma 1.3).
     const double smooth_v =
-        s.smoothing ? std::sqrt(r.eps) + 2 * kicks_before(r, i->l).velocity : 0.0;
+        s.smoothing ? std::sqrt(r.eps) + 2 * kKickRounding * kicks_before(r, i->l).velocity : 0.0;
     const double rebound = s.trace.s[i->l + 1].v;
     if (!ambiguous(i->theta))
       out.push_back(
