@@ -135,7 +135,7 @@ double max_k_e_power(double e) {
 
 double moreau_jean_sup_conjecture(const ZenoData& d) {
   if (d.e >= 1) return std::numeric_limits<double>::infinity();
-  const double first = (1 + d.e) * d.V1 * d.h * (1 + d.g * d.h / (8 * d.V1));
+  const double first = moreau_jean_impact_bound(d.V1, -d.g, d.h, d.e).du;
   if (d.e <= 0) return first;
   const double later = d.V1 * d.h * (1 + d.e) * (1 + 1 / d.e) *
                        std::fmax(1.0, 2 * d.e / (1 - d.e)) * max_k_e_power(d.e);

@@ -89,9 +89,9 @@ double rest_bound(const ZenoData& d);
 // V_k B_k = V_1 e^(k - 1) B_k can grow with k.
 double max_k_e_power(double e);
 
-// Conjecture 3.5, moreau_jean: max_l |u^l - u(t_l)| <= (1 + e) V_1 h (1 + g h / (8 V_1)) +
-// V_1 h (1 + e)(1 + 1/e) max(1, 2 e / (1 - e)) max_k k e^(k - 1), and never more than
-// V_1^2 / (2 g) + (1 + e) V_1 h; e < 1.
+// Conjecture 3.5, moreau_jean: max_l |u^l - u(t_l)| <= B_u + V_1 h (1 + e)(1 + 1/e)
+// max(1, 2 e / (1 - e)) max_k k e^(k - 1), B_u Lemma 2.3's bound on du at the first impact, and
+// never more than V_1^2 / (2 g) + (1 + e) V_1 h; e < 1.
 double moreau_jean_sup_conjecture(const ZenoData& d);
 
 // ---- Statement 4: without COR ----

@@ -61,16 +61,28 @@ std::optional<std::size_t> SceneRuns::first_contact(const Trace& t) const {
   return std::nullopt;
 }
 
-std::optional<std::size_t> SceneRuns::first_crossing(const Trace& t) const {
+bool SceneRuns::contact_step(const Trace& t, std::size_t l, bool smoothing) const {
+  // The step ends on the floor with a contact force: exactly for direct (u^{l+1} = phi), within
+  // h sqrt(eps) / 2 for fb_newton (Lemma 2.1 (d)). (is_contact_step's N^l > u^{l+1} - phi compares
+  // a force with a length, which misjudges fb_newton's steps when h is far from 1 s.)
+  const double h = scene.scene.grid.h;
+  const double ceiling = (smoothing ? h * std::sqrt(eps) / 2 : 0.0) + rounding.position;
+  return t.N[l + 1] > 0 && gap(t, l + 1) <= ceiling;
+}
+
+bool SceneRuns::impact_step(const Trace& t, std::size_t l, bool smoothing) const {
   const Model& m = scene.scene.model;
   const double h = scene.scene.grid.h;
-  for (std::size_t l = 0; l + 1 < t.s.size(); ++l) {
-    if (!is_contact_step(m, t.s[l + 1], t.N[l + 1])) continue;
-    // fb_newton's smoothing makes a step that ends within sqrt(eps / 2) above the floor a contact
-    // step too; the impact's step is the one whose flight reaches the floor.
-    const FloorArrival a = floor_arrival({gap(t, l), t.s[l].v}, m.f);
-    if (a.found && a.tau <= h * (1 + 1e-9)) return l;
-  }
+  if (!contact_step(t, l, smoothing)) return false;
+  // ... and its flight from t_l reaches the floor within it, to the run's resolution of positions
+  // (a gap of a few ulp of a floor at 1e6 puts the crossing just past t_{l+1}).
+  const FloorArrival a = floor_arrival({gap(t, l), t.s[l].v}, m.f);
+  return a.found && (a.tau - h) * a.speed <= rounding.position;
+}
+
+std::optional<std::size_t> SceneRuns::first_impact_step(const Trace& t, bool smoothing) const {
+  for (std::size_t l = 0; l + 1 < t.s.size(); ++l)
+    if (impact_step(t, l, smoothing)) return l;
   return std::nullopt;
 }
 

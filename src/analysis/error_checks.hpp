@@ -22,6 +22,7 @@ struct Rounding {
   double stepped_position = 0;  // moreau_jean, whose increments accumulate one rounding per step
   double stepped_velocity = 0;
   double rebound = 0;  // a velocity from (4-2), v = 2 (phi - u^l) / h - v^l: position * 2 / h
+  double kicks = 0;    // fb_newton: the velocity its smoothing added over the run (a posteriori)
   double time(double speed) const;  // a floor crossing at this speed
 };
 Rounding rounding_of(const Scene& scene, const Trace& exact);
@@ -39,9 +40,12 @@ struct SceneRuns {
   double gap(const Trace& t, std::size_t l) const;  // u^l - phi
   // The first contact step of a run (is_contact_step), or nullopt.
   std::optional<std::size_t> first_contact(const Trace& t) const;
-  // The first contact step in which the run's own flight from t_l reaches the floor (the impact's
-  // step, constant f), or nullopt.
-  std::optional<std::size_t> first_crossing(const Trace& t) const;
+  // Whether step l of direct (smoothing false) or fb_newton (true) is a contact step: it ends on
+  // the floor with a contact force; an impact's step: also its flight from t_l reaches the floor
+  // within it (constant f); and the first impact's step.
+  bool contact_step(const Trace& t, std::size_t l, bool smoothing) const;
+  bool impact_step(const Trace& t, std::size_t l, bool smoothing) const;
+  std::optional<std::size_t> first_impact_step(const Trace& t, bool smoothing) const;
 };
 
 // The exact solution and every scheme on the scene.
@@ -79,7 +83,8 @@ struct BouncingRun {
   double rest_round = 0;
   std::int64_t impacts_before_rest = 0;
 };
-BouncingRun bouncing_run(const SceneRuns& r, const Trace& t, const Rounding& rounding);
+BouncingRun bouncing_run(const SceneRuns& r, const Trace& t, const Rounding& rounding,
+                         bool smoothing = false);
 
 void check_flight(const SceneRuns& r, std::vector<Check>& out);   // Statement 1
 void check_impact(const SceneRuns& r, std::vector<Check>& out);   // Statement 2
