@@ -63,9 +63,10 @@ TEST_CASE("direct_located: the floor arrival and the bounces in closed form", "[
   CHECK(rest.v == 0);
 }
 
-TEST_CASE("direct_located: exact to rounding under a constant force, Zeno included (Proposition "
-          "L.1)",
-          "[direct_located]") {
+TEST_CASE(
+    "direct_located: exact to rounding under a constant force, Zeno included (Proposition "
+    "L.1)",
+    "[direct_located]") {
   struct Case {
     double u0, v0, f;
     std::optional<double> cor;
@@ -73,8 +74,8 @@ TEST_CASE("direct_located: exact to rounding under a constant force, Zeno includ
   };
   // Figure 4 with COR at a step longer than the last bounces; no COR (elastic); a step holding
   // the whole Zeno tail (h > t_inf - t_k for many k); f = 0; f > 0 pushing away.
-  const Case cases[] = {{5, -1, -kG, 0.75, 10, 0.1},    {5, -1, -kG, {}, 10, 0.03},
-                        {0.2, 0, -kG, 0.5, 2, 0.25},    {5.0123, -1, 0, 0.75, 10, 0.07},
+  const Case cases[] = {{5, -1, -kG, 0.75, 10, 0.1},     {5, -1, -kG, {}, 10, 0.03},
+                        {0.2, 0, -kG, 0.5, 2, 0.25},     {5.0123, -1, 0, 0.75, 10, 0.07},
                         {0.01, -1, kG, 0.6, 0.5, 0.013}, {3, 2, -kG, 0.999, 40, 0.01}};
   for (const Case& c : cases) {
     INFO("u0 = " << c.u0 << ", f = " << c.f << ", h = " << c.h);

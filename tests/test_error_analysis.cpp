@@ -76,8 +76,8 @@ TEST_CASE("error_analysis: the bounds' arithmetic", "[error_analysis]") {
   CHECK(timing_factor(0.75, 2) == Approx(1.5));
   CHECK(delay_factor(0.75, 1) == 1);
   // K_max: the first k with e^k V_1 < g h / 2.
-  CHECK(max_impacts(1.0, 10.0, 0.2, 0.5) == 1);  // 2 V_1 = g h: the first rebound is below g h / 2
-  CHECK(max_impacts(1.0, 10.0, 0.1, 0.5) == 2);  // e V_1 = g h / 2 is not below it
+  CHECK(max_impacts(1.0, 10.0, 0.2, 0.5) == 1);   // 2 V_1 = g h: the first rebound is below g h / 2
+  CHECK(max_impacts(1.0, 10.0, 0.1, 0.5) == 2);   // e V_1 = g h / 2 is not below it
   CHECK(max_impacts(1.0, 10.0, 0.01, 0.5) == 5);  // 0.5^5 < 0.05 <= 0.5^4
   CHECK(max_impacts(1.0, 10.0, 0.01, 0.0) == 1);
   // max_k k e^(k-1) is attained near 1 / ln(1/e) and bounded by max(1, 1/(exp(1) e ln(1/e))).
@@ -95,16 +95,18 @@ TEST_CASE("error_analysis: the bounds' arithmetic", "[error_analysis]") {
   CHECK(direct_scheme_rebound(3.0, 0.25, 0.0, 0.1) == Approx(1.5));
 }
 
-TEST_CASE("C90: Statement 1, free flight: direct and moreau_jean are exact under a constant force "
-          "and within a h^2 min(2, omega t) / (12 (1 - (omega h / 2 pi)^2)) under f(t); "
-          "fb_newton adds its smoothing kicks",
-          "[claim][error_analysis]") {
-  for (const char* name : {"s1_direct_constant_u", "s1_direct_constant_v",
-                           "s1_moreau_jean_constant_u", "s1_moreau_jean_constant_v",
-                           "s1_direct_forced_v", "s1_moreau_jean_forced_v"})
+TEST_CASE(
+    "C90: Statement 1, free flight: direct and moreau_jean are exact under a constant force "
+    "and within a h^2 min(2, omega t) / (12 (1 - (omega h / 2 pi)^2)) under f(t); "
+    "fb_newton adds its smoothing kicks",
+    "[claim][error_analysis]") {
+  for (const char* name :
+       {"s1_direct_constant_u", "s1_direct_constant_v", "s1_moreau_jean_constant_u",
+        "s1_moreau_jean_constant_v", "s1_direct_forced_v", "s1_moreau_jean_forced_v"})
     check_identity(name);
   // Lemma 1.2 is attained at leading order: the typical ratio is 0.91.
-  for (const char* name : {"s1_direct_forced_u", "s1_moreau_jean_forced_u", "s1_fb_newton_forced_u"})
+  for (const char* name :
+       {"s1_direct_forced_u", "s1_moreau_jean_forced_u", "s1_fb_newton_forced_u"})
     check_proved_bound(name, 0.85);
   for (const char* name : {"s1_fb_newton_constant_u", "s1_fb_newton_constant_v"}) {
     INFO(name);
@@ -114,9 +116,10 @@ TEST_CASE("C90: Statement 1, free flight: direct and moreau_jean are exact under
   CHECK(number(campaign(), "runs") == 19200);
 }
 
-TEST_CASE("C91: Statement 2, one impact: Lemma 2.1 (direct, COR), 2.2 (no COR: |1 - 2 theta|) and "
-          "2.3 (moreau_jean) hold as identities and bounds in every run",
-          "[claim][error_analysis]") {
+TEST_CASE(
+    "C91: Statement 2, one impact: Lemma 2.1 (direct, COR), 2.2 (no COR: |1 - 2 theta|) and "
+    "2.3 (moreau_jean) hold as identities and bounds in every run",
+    "[claim][error_analysis]") {
   for (const char* name : {"s2_direct_du", "s2_direct_dv", "s2_fb_newton_du", "s2_fb_newton_dv",
                            "s2_moreau_jean_du", "s2_moreau_jean_dv", "s2_moreau_jean_sigma",
                            "s2_direct_sup_single", "s2_moreau_jean_sup_single"})
@@ -124,17 +127,18 @@ TEST_CASE("C91: Statement 2, one impact: Lemma 2.1 (direct, COR), 2.2 (no COR: |
   // The linear crossing's error is second order, |f| theta^2 h^2 / (2 |v^l|): its bound, taken at
   // theta = 1, is looser (median 0.12) but not 100 times.
   check_proved_bound("s2_direct_time", 0.05);
-  for (const char* name : {"s2_direct_du_identity", "s2_direct_dv_identity", "s2_direct_theta",
-                           "s2_direct_time_identity", "s2_fb_newton_du_identity",
-                           "s2_fb_newton_dv_identity", "s2_moreau_jean_du_identity",
-                           "s2_moreau_jean_dv_identity", "s4_direct_rebound_identity"})
+  for (const char* name :
+       {"s2_direct_du_identity", "s2_direct_dv_identity", "s2_direct_theta",
+        "s2_direct_time_identity", "s2_fb_newton_du_identity", "s2_fb_newton_dv_identity",
+        "s2_moreau_jean_du_identity", "s2_moreau_jean_dv_identity", "s4_direct_rebound_identity"})
     check_identity(name);
 }
 
-TEST_CASE("C92: Statement 3, many impacts with COR under gravity: impact times within h A_k, "
-          "speeds within g h S_e(k), a first-order sup error and the rest time within "
-          "O(h ln(1/h)) of the Zeno time, in every run",
-          "[claim][error_analysis]") {
+TEST_CASE(
+    "C92: Statement 3, many impacts with COR under gravity: impact times within h A_k, "
+    "speeds within g h S_e(k), a first-order sup error and the rest time within "
+    "O(h ln(1/h)) of the Zeno time, in every run",
+    "[claim][error_analysis]") {
   for (const char* name : {"s3_direct_timing", "s3_direct_speed", "s3_direct_rest"})
     check_proved_bound(name, 0.2);
   check_proved_bound("s3_direct_sup", 0.1);
@@ -143,9 +147,10 @@ TEST_CASE("C92: Statement 3, many impacts with COR under gravity: impact times w
     check_identity(name);
 }
 
-TEST_CASE("C92: on Figure 4 with COR 0.75 the rest time's error falls at order 0.85 over h, as "
-          "h ln(1/h) does, under Theorem 3.3's bound",
-          "[claim][error_analysis]") {
+TEST_CASE(
+    "C92: on Figure 4 with COR 0.75 the rest time's error falls at order 0.85 over h, as "
+    "h ln(1/h) does, under Theorem 3.3's bound",
+    "[claim][error_analysis]") {
   SweepOptions options;
   const toml::table sweeps = run_sweeps(kContext, options);
   const double order = sweeps["zeno"]["rest_time_order"].value<double>().value();
@@ -154,9 +159,10 @@ TEST_CASE("C92: on Figure 4 with COR 0.75 the rest time's error falls at order 0
   CHECK(order < 0.95);
 }
 
-TEST_CASE("C93: Statement 4, no COR: the scheme's COR is |1 - 2 theta| within |f| h / (4 V), and "
-          "for f = 0 its error stays above 2 min(theta, 1 - theta) V (t - t*) (no convergence)",
-          "[claim][error_analysis]") {
+TEST_CASE(
+    "C93: Statement 4, no COR: the scheme's COR is |1 - 2 theta| within |f| h / (4 V), and "
+    "for f = 0 its error stays above 2 min(theta, 1 - theta) V (t - t*) (no convergence)",
+    "[claim][error_analysis]") {
   check_proved_bound("s4_direct_effective_cor", 0.1);
   check_proved_bound("s4_fb_newton_effective_cor", 0.1);
   // A lower bound: the ratio is bound / measured, 1 where the scheme's error is the bound itself.
@@ -167,9 +173,10 @@ TEST_CASE("C93: Statement 4, no COR: the scheme's COR is |1 - 2 theta| within |f
   }
 }
 
-TEST_CASE("C94: Conjectures 3.4 (fb_newton inherits Theorems 3.1-3.3) and 3.5 (moreau_jean's "
-          "first-order sup error) have no counterexample in the campaign",
-          "[claim][error_analysis]") {
+TEST_CASE(
+    "C94: Conjectures 3.4 (fb_newton inherits Theorems 3.1-3.3) and 3.5 (moreau_jean's "
+    "first-order sup error) have no counterexample in the campaign",
+    "[claim][error_analysis]") {
   for (const char* name : {"s3_fb_newton_timing", "s3_fb_newton_speed", "s3_fb_newton_sup",
                            "s3_fb_newton_rest", "s3_fb_newton_impacts", "s3_moreau_jean_sup"}) {
     INFO(name);
@@ -182,9 +189,10 @@ TEST_CASE("C94: Conjectures 3.4 (fb_newton inherits Theorems 3.1-3.3) and 3.5 (m
   CHECK(number(campaign(), "violations") == 0);
 }
 
-TEST_CASE("C95: direct_located is exact to rounding with a constant force (Figures 3 and 4) and "
-          "second order on the period-1 vibrating table, where direct and moreau_jean are first",
-          "[claim][error_analysis]") {
+TEST_CASE(
+    "C95: direct_located is exact to rounding with a constant force (Figures 3 and 4) and "
+    "second order on the period-1 vibrating table, where direct and moreau_jean are first",
+    "[claim][error_analysis]") {
   check_identity("located_direct_located_exact");
   SweepOptions options;
   options.impact_points = 2;
