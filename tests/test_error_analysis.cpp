@@ -97,7 +97,7 @@ TEST_CASE("error_analysis: the bounds' arithmetic", "[error_analysis]") {
 
 TEST_CASE(
     "C90: Statement 1, free flight: direct and moreau_jean are exact under a constant force "
-    "and within a h^2 min(2, omega t) / (12 (1 - (omega h / 2 pi)^2)) under f(t); "
+    "and within a h^2 min(2, omega t) / (12 (1 - (omega h / 2 pi)^2)) under f(t), and "
     "fb_newton adds its smoothing kicks",
     "[claim][error_analysis]") {
   for (const char* name :
