@@ -21,6 +21,7 @@
 #include <cstdint>
 
 #include "impact/force.hpp"
+#include "impact/free_flight.hpp"
 #include "impact/model.hpp"
 #include "impact/scheme_flight.hpp"
 
@@ -67,41 +68,66 @@ class DirectLocated {
  public:
   DirectLocated(const Model& model, double h, const DirectLocatedParams&)
       : phi_(model.phi),
+        f_(model.f),
         e_(model.cor.value_or(1.0)),
         h_(h),
+        constant_(constant_force(model)),
         flight_(model, h),
-        force_(model),
-        constant_(constant_force(model)) {}
+        force_(model) {}
 
   void initialize(const State& s, std::int64_t l) {
     gap_ = {s.u - phi_, s.v};
-    flight_.start(l, gap_);
+    start_flight(l);
   }
 
   StepInfo do_step(State& s, std::int64_t l) {
     StepInfo info;
-    const State free = flight_.step(l);  // (5-1) with N^l = 0, from the last anchor
-    const double f = flight_.step_force();
-    if (free.u > 0 && !dips_below_floor(gap_, h_, f)) {
+    // (5-1) with N^l = 0 from the last anchor: for a constant force direct's closed form
+    // (free_flight.hpp), else the scheme's flight under f(t) (scheme_flight.hpp).
+    State free;
+    double f = f_;
+    if (constant_) {
+      free_flight(anchor_.u, anchor_.v, static_cast<double>(l + 1 - anchor_l_) * h_, f_, free.u,
+                  free.v);
+    } else {
+      free = flight_.step(l);
+      f = flight_.step_force();
+    }
+    if (free.u > 0 && !dips_below_floor(gap_, h_, f)) [[likely]] {
       gap_ = free;
     } else {
-      const State before = gap_;
-      gap_ = constant_ ? located_step(before, free, h_, f, e_)
-                       : located_step(before, free, static_cast<double>(l) * h_, h_, f, force_, e_);
-      const double impulse = gap_.v - before.v - h_ * f;
-      info.contact_force = impulse > 0 ? impulse / h_ : 0.0;
-      flight_.start(l + 1, gap_);
+      info.contact_force = impact(l, free, f);
     }
     s = {phi_ + gap_.u, gap_.v};
     return info;
   }
 
  private:
-  double phi_, e_, h_;
-  SchemeFlight flight_;  // in gap coordinates
-  ForceFunction force_;  // the impulses of f(t) on both sides of an impact
+  // The step with an impact: located_step from gap_, and a new free flight from its end; returns
+  // N^l. Out of line, so that the free steps' loop keeps its state in registers (direct.hpp).
+  [[gnu::noinline]] double impact(std::int64_t l, State free, double f) {
+    const State before = gap_;
+    gap_ = constant_ ? located_step(before, free, h_, f, e_)
+                     : located_step(before, free, static_cast<double>(l) * h_, h_, f, force_, e_);
+    const double impulse = gap_.v - before.v - h_ * f;
+    start_flight(l + 1);
+    return impulse > 0 ? impulse / h_ : 0.0;
+  }
+
+  // A free flight starts from gap_ at t_l.
+  void start_flight(std::int64_t l) {
+    anchor_ = gap_;
+    anchor_l_ = l;
+    if (!constant_) flight_.start(l, gap_);
+  }
+
+  double phi_, f_, e_, h_;
   bool constant_;
-  State gap_;  // (u - phi, v) at t_l
+  State gap_;                  // (u - phi, v) at t_l
+  State anchor_;               // where the free flight started (constant force)
+  std::int64_t anchor_l_ = 0;  // and when
+  SchemeFlight flight_;        // the free flight under f(t), in gap coordinates
+  ForceFunction force_;        // the impulses of f(t) on both sides of an impact
 };
 
 }  // namespace impact
