@@ -8,6 +8,7 @@
 #include <toml++/toml.h>
 
 #include "analysis/error_campaign.hpp"
+#include "analysis/error_run.hpp"
 #include "analysis/error_sweeps.hpp"
 #include "analysis/experiment.hpp"
 

@@ -88,11 +88,6 @@ struct CampaignResult {
   std::vector<Check> checks;
   std::vector<CheckSummary> summaries;  // one per check name, in a fixed order
 };
-CampaignResult run_campaign(const CampaignOptions& options);
-
-// The checks of one scene (all schemes), appended to `out`.
-void check_scene(const CampaignScene& scene, std::size_t index, std::vector<Check>& out);
-
 // Whether a check name is a conjecture's.
 bool is_conjecture(std::string_view name);
 

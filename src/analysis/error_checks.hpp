@@ -48,9 +48,6 @@ struct SceneRuns {
   std::optional<std::size_t> first_impact_step(const Trace& t, bool smoothing) const;
 };
 
-// The exact solution and every scheme on the scene.
-SceneRuns run_scene_runs(const CampaignScene& scene, std::size_t index);
-
 // The velocity fb_newton's smoothing may add in free flight in step l (Lemma 1.3), from the exact
 // gap at t_{l+1}.
 double kick(const SceneRuns& r, std::size_t l);

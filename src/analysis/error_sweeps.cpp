@@ -8,6 +8,7 @@
 
 #include "analysis/error_bounds.hpp"
 #include "analysis/error_checks.hpp"
+#include "analysis/error_run.hpp"
 #include "analysis/fit.hpp"
 #include "analysis/work_precision_curves.hpp"
 #include "impact/error_norms.hpp"
