@@ -151,7 +151,7 @@ TEST_CASE(
     "C92: on Figure 4 with COR 0.75 the rest time's error falls at order 0.85 over h, as "
     "h ln(1/h) does, under Theorem 3.3's bound",
     "[claim][error_analysis]") {
-  SweepOptions options;
+  ErrorSweepOptions options;
   const toml::table sweeps = run_sweeps(kContext, options);
   const double order = sweeps["zeno"]["rest_time_order"].value<double>().value();
   // h ln(1/h) over h = 1e-4 .. 3e-2 has a log-log slope of 1 - 1/ln(1/h) ~ 0.8-0.9.
@@ -194,7 +194,7 @@ TEST_CASE(
     "second order on the period-1 vibrating table, where direct and moreau_jean are first",
     "[claim][error_analysis]") {
   check_identity("located_direct_located_exact");
-  SweepOptions options;
+  ErrorSweepOptions options;
   options.impact_points = 2;
   const toml::table sweeps = run_sweeps(kContext, options);
   for (const char* scene : {"figure3_no_cor", "figure3_cor075", "figure4_cor075"}) {

@@ -17,7 +17,7 @@ namespace impact {
 struct ErrorAnalysisOptions {
   CampaignOptions campaign;
   bool sweeps = true;  // false: the campaign alone
-  SweepOptions sweep;
+  ErrorSweepOptions sweep;
 };
 
 // Writes campaign.csv (every check), checks.md (the summary table) and the sweeps' files to the

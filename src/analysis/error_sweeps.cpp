@@ -227,7 +227,7 @@ toml::table located_sweep(const ExperimentContext& context, double h_min) {
 
 }  // namespace
 
-toml::table run_sweeps(const ExperimentContext& context, const SweepOptions& options) {
+toml::table run_sweeps(const ExperimentContext& context, const ErrorSweepOptions& options) {
   return toml::table{{"flight", flight_sweep(context, options.sweep_points)},
                      {"impact", impact_sweep(context, options.impact_points)},
                      {"zeno", zeno_sweep(context, options.sweep_points)},

@@ -20,13 +20,13 @@
 
 namespace impact {
 
-struct SweepOptions {
+struct ErrorSweepOptions {
   int impact_points = 300;  // h values of impact.csv
   int sweep_points = 20;    // h values of zeno.csv and no_cor.csv
   double located_h_min = 1e-5;
 };
 
 // Writes the files above and returns their key numbers (located's order, the largest ratios).
-toml::table run_sweeps(const ExperimentContext& context, const SweepOptions& options);
+toml::table run_sweeps(const ExperimentContext& context, const ErrorSweepOptions& options);
 
 }  // namespace impact
