@@ -65,8 +65,9 @@ TEST_CASE("capabilities: the table", "[capabilities]") {
   // Restitution, Harmonic force, Expression of t, Iterations channel, reFerence, energy Bound,
   // exact eVents.
   const std::vector<std::pair<std::string, std::string>> rows = {
-      {"direct", "RHE--B-"},  {"fb_newton", "RHEI-B-"}, {"moreau_jean", "RHE----"},
-      {"penalty", "-HEI---"}, {"exact", "RH--FBV"},     {"event_driven", "RHE-F-V"},
+      {"direct", "RHE--B-"},         {"fb_newton", "RHEI-B-"}, {"moreau_jean", "RHE----"},
+      {"penalty", "-HEI---"},        {"exact", "RH--FBV"},     {"event_driven", "RHE-F-V"},
+      {"direct_located", "RHE----"},
   };
   const auto row = [](const impact::Capabilities& c) {
     std::string r;

@@ -163,10 +163,11 @@ TEST_CASE("force: a list of values, an assignment or a malformed number is refus
 TEST_CASE("force: penalty with a COR and an expression points to event_driven, not exact",
           "[force][regression]") {
   const std::string penalty = "[method]\nname = \"penalty\"\n[floor]\ncor = 0.5\n";
-  CHECK_SCENE_ERROR(
-      parse(with_method(penalty) + "[force]\nexpression = \"-9.8 + sin(t)\"\n"),
-      Contains("has no restitution law") && Contains("event_driven") && !Contains("exact "));
-  CHECK_SCENE_ERROR(parse(with_method(penalty) + kHarmonic), Contains(", exact or event_driven"));
+  CHECK_SCENE_ERROR(parse(with_method(penalty) + "[force]\nexpression = \"-9.8 + sin(t)\"\n"),
+                    Contains("has no restitution law") && Contains("event_driven") &&
+                        !Contains(" exact,") && !Contains(" exact or") && !Contains("or exact"));
+  CHECK_SCENE_ERROR(parse(with_method(penalty) + kHarmonic),
+                    Contains(" exact,") || Contains(" exact or") || Contains("or exact"));
 }
 
 TEST_CASE("force: exact with an expression force points to event_driven", "[force]") {

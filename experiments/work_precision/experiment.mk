@@ -11,7 +11,7 @@ work_precision_SCENES := experiments/figure3/no_cor.toml experiments/figure3/cor
   experiments/work_precision/table_chaotic.toml experiments/work_precision/expression.toml
 work_precision_FIGURES := $(foreach f,work_precision $(addprefix work_precision_,figure3_no_cor \
   figure3_cor075 figure4_no_cor figure4_cor075 offgrid_no_cor forced table_period1 \
-  table_chaotic expression),$(f).png $(f).svg)
+  table_chaotic expression located),$(f).png $(f).svg)
 TIMING_FIGURES += $(work_precision_FIGURES)
 work_precision_OUTPUTS := $(addprefix $(TIMING_DIR)/,$(work_precision_FIGURES)) \
   $(RESULTS)/work_precision/summary.toml $(RESULTS)/work_precision/orders.md

@@ -8,6 +8,9 @@
 #   work_precision_<scene>.{png,svg}  every error measure against CPU time (first row), against h
 #                                     (second row, the time-steppers) and, on the scenes penalty,
 #                                     event_driven or LSODAR run, against their tolerance (third row)
+#   work_precision_located.{png,svg}  direct_located (paper_notes/error_analysis.md) against direct,
+#                                     moreau_jean and the cost of exact, on Figures 3 and 4 (COR)
+#                                     and the period-1 vibrating table
 # Penalty, event_driven and LSODAR run on a fixed grid (h = 1e-3) and sweep their tolerance,
 # over which their CPU time hardly moves (it goes to the output steps): such a sweep drawn against
 # CPU time is a vertical streak. So the CPU-time panels show the tightest tolerance only, one
@@ -26,7 +29,7 @@ file(scene, c) = results.'/curves/'.scene.'.'.c.'.csv'
 is_penalty(c) = strstrt(c, "penalty") == 1
 # A tolerance sweep on the fixed grid: penalty's, event_driven's and Siconos's LSODAR.
 is_tol(c) = is_penalty(c) || c eq "siconos_lsodar" || c eq "event_driven"
-col(c) = c eq "direct" ? "#0072B2" : c eq "fb_newton" ? "#56B4E9" : c eq "moreau_jean" ? "#009E73" : \
+col(c) = c eq "direct" ? "#0072B2" : c eq "direct_located" ? "#E41A1C" : c eq "fb_newton" ? "#56B4E9" : c eq "moreau_jean" ? "#009E73" : \
          c eq "siconos" ? "#000000" : c eq "siconos_lsodar" ? "#7F7F7F" : \
          c eq "event_driven" ? "#E69F00" : \
          strstrt(c, "rk8pd") ? "#CC79A7" : "#D55E00"
@@ -34,9 +37,9 @@ dash(c) = c eq "fb_newton" ? 2 : c eq "siconos" ? 3 : is_tol(c) ? 4 : 1
 # Siconos's Moreau-Jean is moreau_jean's scheme: against h its points lie on moreau_jean's (errors
 # equal to 1e-11), so its squares are drawn larger, around them.
 psize(c) = c eq "siconos" ? 1.4 : 0.8
-point(c) = c eq "direct" ? 7 : c eq "fb_newton" ? 6 : c eq "moreau_jean" ? 5 : c eq "siconos" ? 4 : \
+point(c) = c eq "direct" ? 7 : c eq "direct_located" ? 3 : c eq "fb_newton" ? 6 : c eq "moreau_jean" ? 5 : c eq "siconos" ? 4 : \
            c eq "siconos_lsodar" ? 9 : c eq "event_driven" ? 13 : strstrt(c, "1e4") ? 8 : strstrt(c, "1e6") ? 10 : 12
-tit(c) = c eq "direct" ? "direct (5-1)" : c eq "fb_newton" ? "fb\\_newton (5-3)" : \
+tit(c) = c eq "direct" ? "direct (5-1)" : c eq "direct_located" ? "direct\\_located (impact located)" : c eq "fb_newton" ? "fb\\_newton (5-3)" : \
          c eq "moreau_jean" ? "moreau\\_jean" : c eq "siconos" ? "Siconos MoreauJeanOSI + LCP" : \
          c eq "siconos_lsodar" ? "Siconos EventDriven + LsodarOSI" : \
          c eq "event_driven" ? "event\\_driven (GSL rk8pd)" : \
@@ -218,6 +221,38 @@ do for [format in "png svg"] {
   @key_strip
   unset multiplot
   }
+
+  # --- direct_located against direct, moreau_jean and exact's cost (the vertical line) ---
+  if (format eq "png") {
+    set terminal pngcairo size 1300,1000 font ",10"
+    set output out.'/work_precision_located.png'
+  } else {
+    set terminal svg size 1300,1000 font ",10" dynamic
+    set output out.'/work_precision_located.svg'
+  }
+  set lmargin; set rmargin; set tmargin; set bmargin
+  set border; set tics; unset title
+  set multiplot layout 2,2 title "Work against precision of direct\\_located (each impact located inside its step): sup-norm error of u against CPU time\n(vertical line: exact sampled on h = 10^{-3} s; ".zero_note.")"
+  set logscale xy
+  set grid
+  set xlabel "CPU time of the solve [s]"
+  set ylabel mlabel("sup_u")
+  set key bottom left box opaque font ",9"
+  mode = 1; mc = mcol("sup_u")
+  located_scenes = "figure3_no_cor figure3_cor075 figure4_cor075 table_period1"
+  panel = 0
+  do for [scene in located_scenes] {
+    panel = panel + 1
+    set title sprintf("(%c) %s", 96 + panel, value('title_'.scene))
+    @y_range
+    set key top right box opaque Left reverse font ",9" title ""
+    if (exists('exact_seconds_'.scene)) { set arrow 1 from value('exact_seconds_'.scene), graph 0 to value('exact_seconds_'.scene), graph 1 nohead dt 2 lw 2 lc rgb "#000000" }
+    plot for [c in "direct_located direct moreau_jean"] file(scene, c) skip 1 using 3:(yvalue(c, column(mc))) \
+           with linespoints lc rgb col(c) dt dash(c) pt point(c) ps psize(c) lw 1.5 title tit(c)
+    unset arrow 1
+  }
+  unset multiplot
+  unset key
 
   # --- one figure per scene: every measure against CPU time, against h, against the tolerance ---
   do for [scene in scenes] {

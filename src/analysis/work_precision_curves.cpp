@@ -118,7 +118,7 @@ Scene penalty_variant(Scene scene, const std::string& stepper, double c_N, doubl
 std::vector<Curve> measure_curves(const Scene& scene, const WorkPrecisionScene& spec,
                                   const WorkPrecisionOptions& options) {
   std::vector<Curve> curves;
-  for (const char* method : {"moreau_jean", "fb_newton", "direct"})
+  for (const char* method : {"moreau_jean", "fb_newton", "direct", "direct_located"})
     curves.push_back({method, true, step_curve(scene, method, options.timing, spec.step_min)});
   for (const PeerSolver& peer : options.peers)
     if (!peer.time_dependent_force_only || !constant_force(scene.model))

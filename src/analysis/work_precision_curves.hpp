@@ -75,8 +75,9 @@ std::vector<WorkPrecisionPoint> step_curve(const Scene& scene, std::string_view 
 Scene penalty_variant(Scene scene, const std::string& stepper, double c_N, double tolerance);
 
 // Every curve of a scene, in drawing order: moreau_jean, fb_newton, direct (on top where their
-// errors coincide), the peers, event_driven over its tolerance (on a harmonic force, where it is
-// not the reference), then penalty's (on a scene without COR: penalty has no COR law).
+// errors coincide), direct_located (paper_notes/error_analysis.md, "Beyond order one"), the
+// peers, event_driven over its tolerance (on a harmonic force, where it is not the reference),
+// then penalty's (on a scene without COR: penalty has no COR law).
 std::vector<Curve> measure_curves(const Scene& scene, const WorkPrecisionScene& spec,
                                   const WorkPrecisionOptions& options);
 

@@ -152,8 +152,12 @@ toml::table run_scene(const ExperimentContext& context, const WorkPrecisionScene
     if (!peer.same_as.empty())
       scene_summary.insert(peer.name + "_vs_" + peer.same_as,
                            peer_comparison(curves, peer, options.timing.has_value()));
-  if (options.timing)
-    out.exact_table += exact_row(spec, exact_cost(scene, *options.timing), scene_summary);
+  if (options.timing) {
+    const ExactCost cost = exact_cost(scene, *options.timing);
+    out.exact_table += exact_row(spec, cost, scene_summary);
+    // For plot.gp's direct_located figure: the reference's cost, sampled on h = 1e-3.
+    out.curves_gp += "exact_seconds_" + spec.name + " = " + round_trip(cost.solve.min) + "\n";
+  }
   out.curves_gp += "curves_" + spec.name + " = \"" + names + "\"\n" + "title_" + spec.name +
                    " = \"" + spec.title + "\"\n";
   std::string& names_of_kind = spec.forced ? out.forced_scene_names : out.constant_scene_names;

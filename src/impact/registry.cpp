@@ -50,6 +50,11 @@ const MethodInfo kMethods[] = {
              .time_expression = true,
              .reference = true,
              .exact_events = true}},
+    {.name = "direct_located",
+     .summary = "(5-1) with each impact located inside its step and the rest of the step flown "
+                "after it",
+     .defaults = DirectLocatedParams{},
+     .can = {.restitution = true, .harmonic_force = true, .time_expression = true}},
 };
 static_assert(std::size(kMethods) == std::variant_size_v<MethodParams>);
 
@@ -122,6 +127,8 @@ AnyStepper make_stepper(const Model& model, double h, const MethodParams& params
         if constexpr (std::is_same_v<Params, PenaltyParams>) return Penalty(model, h, p);
         if constexpr (std::is_same_v<Params, ExactParams>) return ExactStepper(model, h, p);
         if constexpr (std::is_same_v<Params, EventDrivenParams>) return EventDriven(model, h, p);
+        if constexpr (std::is_same_v<Params, DirectLocatedParams>)
+          return DirectLocated(model, h, p);
       },
       params);
 }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "impact/direct.hpp"
+#include "impact/direct_located.hpp"
 #include "impact/event_driven.hpp"
 #include "impact/exact.hpp"
 #include "impact/fb_newton.hpp"
@@ -20,14 +21,14 @@ namespace impact {
 
 // One method and its parameters: what a scene's [method] table says.
 using MethodParams = std::variant<DirectParams, FbNewtonParams, MoreauJeanParams, PenaltyParams,
-                                  ExactParams, EventDrivenParams>;
+                                  ExactParams, EventDrivenParams, DirectLocatedParams>;
 
-// DirectHarmonic, DirectTimeDependent and MoreauJeanTimeDependent are `direct` and `moreau_jean`
-// with a time-dependent force, DirectAsPrinted `direct` with (5-1) as printed (direct.hpp says why
-// more than one type).
+// One stepper type per method, and more for some: DirectHarmonic, DirectTimeDependent and
+// MoreauJeanTimeDependent are `direct` and `moreau_jean` with a time-dependent force,
+// DirectAsPrinted `direct` with (5-1) as printed (direct.hpp says why more than one type).
 using AnyStepper =
     std::variant<Direct, FbNewton, MoreauJean, Penalty, ExactStepper, EventDriven, DirectHarmonic,
-                 DirectTimeDependent, MoreauJeanTimeDependent, DirectAsPrinted>;
+                 DirectTimeDependent, MoreauJeanTimeDependent, DirectAsPrinted, DirectLocated>;
 static_assert([]<class... S>(std::variant<S...>*) { return (Stepper<S> && ...); }(
                   static_cast<AnyStepper*>(nullptr)),
               "every method's stepper has the interface of stepper.hpp");
