@@ -120,10 +120,20 @@ class ErrorObserver {
       const State ref = exact_.at(grid_.t(p.l));
       if (p.l == grid_.steps) end_ = ref;
       e_.sup_u = std::fmax(e_.sup_u, std::fabs(p.s.u - ref.u));
-      e_.l1_v += grid_.h * std::fabs(p.s.v - ref.v);
+      add_l1_v(std::fabs(p.s.v - ref.v));
     }
     pending_.clear();
     reference_seconds_ += seconds_since(start);
+  }
+
+  // l1_v += h dv, skipping the product when it cannot change l1_v: a particle at rest carries
+  // v = +-2^-1073 (restitution.hpp), and a product with a subnormal operand costs ~100 cycles on
+  // some processors (measured on an Intel Xeon family 6 model 167: the reference's share of a run
+  // at rest fell from 47 to 10 ns per step). h dv < 2^-1022 h is below half an ulp of any
+  // l1_v >= 2^-900 for h < 2^60, so the sum is the same bits.
+  void add_l1_v(double dv) {
+    if (dv < std::numeric_limits<double>::min() && e_.l1_v >= 0x1p-900 && grid_.h < 0x1p60) return;
+    e_.l1_v += grid_.h * dv;
   }
 
   ReferenceSolution exact_;
