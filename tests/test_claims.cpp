@@ -62,3 +62,16 @@ TEST_CASE(
   CHECK(text.find("**0.02603**") != std::string::npos);  // the second of the four shifts
   CHECK(text.find("| **beyond the paper**: z |") != std::string::npos);
 }
+
+TEST_CASE("ledger: the terminal table names every number it prints", "[ledger][regression]") {
+  const std::string out = std::string(IMPACT_BUILD_DIR) + "/tests/claims_table.txt";
+  REQUIRE(std::system(("cd '" + std::string(IMPACT_SOURCE_DIR) + "' && '" + IMPACT_BUILD_DIR +
+                       "/impact-claims' table paper_notes/claims_source.md '' experiments > '" +
+                       out + "' 2>&1")
+                          .c_str()) == 0);
+  std::ifstream in(out);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // Figure 2's jump, C1, with the key it comes from (the committed reference: no results given).
+  CHECK(text.find("      figure2:figure2.s2_jump_at_t_plus_eps_printed = -0.001499*\n") !=
+        std::string::npos);
+}

@@ -244,29 +244,28 @@ std::string markdown(const std::string& source, const std::string& references) {
   return out.str();
 }
 
-// The terminal table: claim, verdict, numbers (latest run, else the reference), test.
+// The terminal table: claim, verdict and test on one line, then each measured number on a line of
+// its own as key = value (latest run, else the reference), so that a number says what it is.
 void table(const std::string& source, const std::string& results, const std::string& references) {
   Numbers numbers(results, references);
   bool any_reference = false;
-  std::printf("%-4s  %-35s  %-32s  %s\n", "id", "verdict", "measured", "test");
+  std::printf("%-4s  %-35s  %s\n", "id", "verdict", "test");
   for (const std::string& line : read_lines(source)) {
     if (!is_row(line)) continue;
     const Row row = parse_row(line);
-    std::string measured;
+    const std::string& test = row.cells[3];
+    const auto slash = test.find(" / ");
+    std::printf("%-4s  %-35s  %s\n", row.cells[0].c_str(), kVerdicts[row.verdict],
+                (slash == std::string::npos ? test : test.substr(slash + 3)).c_str());
     const std::string& cell = row.cells[4];
     for (std::sregex_iterator m(cell.begin(), cell.end(), reference_pattern()), end; m != end;
          ++m) {
       bool from_results = false;
       const auto value = numbers.get((*m)[1].str(), (*m)[2].str(), &from_results);
       if (!from_results) any_reference = true;
-      measured +=
-          (measured.empty() ? "" : ", ") + value.value_or("(missing)") + (from_results ? "" : "*");
+      std::printf("      %s:%s = %s%s\n", (*m)[1].str().c_str(), (*m)[2].str().c_str(),
+                  value.value_or("(missing)").c_str(), from_results ? "" : "*");
     }
-    const std::string& test = row.cells[3];
-    const auto slash = test.find(" / ");
-    std::printf("%-4s  %-35s  %-32s  %s\n", row.cells[0].c_str(), kVerdicts[row.verdict],
-                measured.empty() ? "-" : measured.c_str(),
-                (slash == std::string::npos ? test : test.substr(slash + 3)).c_str());
   }
   if (any_reference)
     std::printf("* no result of the latest run: the committed reference.toml value\n");
