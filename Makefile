@@ -66,6 +66,7 @@ help:
 	@echo "make fuzz         fuzz the scene reader and --set for $(FUZZ_SECONDS) s (clang); fuzz-long: 30 min"
 	@echo "make determinism  check that an -O0 build writes the same bytes as $(BUILD)/"
 	@echo "make odr-check    link the library with -flto into one shared object: fails on an ODR violation"
+	@echo "make examples     install to a temporary prefix, build examples/ against it and run them"
 
 all:
 	@start=$$(date +%s%N); $(MAKE) tools && $(MAKE) experiments && \
@@ -147,6 +148,13 @@ claims-md: configure
 
 clean:
 	rm -rf $(BUILD) $(BUILD).configure.log $(RESULTS)
+
+# The examples against the installed library (find_package(impact 0.2) and pkg-config), as a
+# program outside the repository builds them: only the library and the command are built here.
+.PHONY: examples
+examples: configure
+	@cmake --build $(BUILD) -j $(JOBS) --target impact_core impact_cli
+	@JOBS=$(JOBS) bash examples/check_installed.sh $(BUILD)
 
 # Hardening (tests/README.md): the test suite under AddressSanitizer and UBSan, the libFuzzer
 # target of the scene reader and --set (tests/fuzz; clang is installed for it only), and

@@ -1,0 +1,40 @@
+# `cmake --install build --prefix DIR`: the `impact` command in DIR/bin, and the core library as a
+# package that a program finds with find_package(impact 0.2) and links as impact::impact, or with
+# pkg-config (impact.pc). The scene reader, the analyses and the CLI's sources stay private.
+include(CMakePackageConfigHelpers)
+
+install(TARGETS impact_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+
+# The public headers: the umbrella impact.hpp, the API it includes, and the headers those include.
+# Left out, as the core's implementation: gsl_errors.hpp, processor.hpp, step_quadrature.hpp and
+# work_energy.hpp (no public header includes them).
+set(IMPACT_PUBLIC_HEADERS
+  impact.hpp atomic_file.hpp channels.hpp contact.hpp direct.hpp direct_located.hpp ensemble.hpp
+  error_norms.hpp event_driven.hpp event_log.hpp event_track.hpp events.hpp exact.hpp
+  fb_newton.hpp flight_search.hpp force.hpp format.hpp free_flight.hpp harmonic_series.hpp
+  model.hpp moreau_jean.hpp ode_flight.hpp output.hpp penalty.hpp registry.hpp repeats.hpp
+  restitution.hpp row_stream.hpp run.hpp run_scene.hpp scene.hpp scheme_flight.hpp stepper.hpp
+  summary.hpp summary_lanes.hpp version.hpp)
+list(TRANSFORM IMPACT_PUBLIC_HEADERS PREPEND ${PROJECT_SOURCE_DIR}/src/impact/)
+install(FILES ${IMPACT_PUBLIC_HEADERS} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/impact)
+
+set(IMPACT_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/impact)
+install(TARGETS impact_core EXPORT impactTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+install(EXPORT impactTargets NAMESPACE impact:: DESTINATION ${IMPACT_CMAKE_DIR})
+configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/impactConfig.cmake.in
+                              ${PROJECT_BINARY_DIR}/impactConfig.cmake
+                              INSTALL_DESTINATION ${IMPACT_CMAKE_DIR})
+# Before 1.0 a minor release may change the API (0.2 is not 0.1), so a request for 0.2 accepts
+# 0.2.x only.
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/impactConfigVersion.cmake
+                                 COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/impactConfig.cmake ${PROJECT_BINARY_DIR}/impactConfigVersion.cmake
+        DESTINATION ${IMPACT_CMAKE_DIR})
+
+# impact.pc finds its prefix from where it lies (${pcfiledir}), so that it stays right under
+# `cmake --install --prefix DIR`. The archive's dependencies are in Requires, not Requires.private:
+# a static library needs them on every link.
+file(RELATIVE_PATH IMPACT_PC_TO_PREFIX /prefix/${CMAKE_INSTALL_LIBDIR}/pkgconfig /prefix)
+string(REGEX REPLACE "/$" "" IMPACT_PC_TO_PREFIX "${IMPACT_PC_TO_PREFIX}")
+configure_file(${PROJECT_SOURCE_DIR}/cmake/impact.pc.in ${PROJECT_BINARY_DIR}/impact.pc @ONLY)
+install(FILES ${PROJECT_BINARY_DIR}/impact.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)

@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# The examples against the installed package, as a program outside the repository uses it:
+# installs BUILD (already built) to a temporary prefix, builds examples/ there with
+# find_package(impact 0.2) and runs both, then compiles one by hand with pkg-config's flags.
+#   bash examples/check_installed.sh BUILD
+set -euo pipefail
+build=${1:?usage: check_installed.sh BUILD}
+examples=$(cd "$(dirname "$0")" && pwd)
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+cmake --install "$build" --prefix "$tmp/prefix" > "$tmp/install.log"
+cmake -S "$examples" -B "$tmp/b" -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$tmp/prefix" > "$tmp/configure.log" 2>&1 ||
+  { cat "$tmp/configure.log"; exit 1; }
+cmake --build "$tmp/b" -j "${JOBS:-2}" > "$tmp/build.log" 2>&1 || { cat "$tmp/build.log"; exit 1; }
+for example in bouncing_ball ensemble_sweep; do
+  echo "== $example (find_package(impact 0.2), impact::impact)"
+  "$tmp/b/$example"
+done
+
+echo "== bouncing_ball (pkg-config --cflags --libs impact)"
+pc=$(find "$tmp/prefix" -name impact.pc)
+export PKG_CONFIG_PATH="$(dirname "$pc")${PKG_CONFIG_PATH:+:$PKG_CONFIG_PATH}"
+read -r -a flags <<<"$(pkg-config --cflags --libs impact)"
+"${CXX:-c++}" -std=c++20 -O2 "$examples/bouncing_ball.cpp" "${flags[@]}" -o "$tmp/bouncing_ball_pc"
+"$tmp/bouncing_ball_pc"
+echo "examples: built against the package installed from $build (CMake and pkg-config) and ran"

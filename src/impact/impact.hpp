@@ -1,0 +1,25 @@
+// The library's public API in one include, for a program that uses the installed package
+// (README.md, "Using impact from your own C++ code"): the model, the steppers behind one interface
+// and their registry, the time loop, the exact reference and the error norms, the ensemble, and
+// the writers of rows and events.
+#pragma once
+
+#include "impact/direct.hpp"
+#include "impact/direct_located.hpp"
+#include "impact/ensemble.hpp"
+#include "impact/error_norms.hpp"
+#include "impact/event_driven.hpp"
+#include "impact/event_log.hpp"
+#include "impact/exact.hpp"
+#include "impact/fb_newton.hpp"
+#include "impact/model.hpp"
+#include "impact/moreau_jean.hpp"
+#include "impact/output.hpp"
+#include "impact/penalty.hpp"
+#include "impact/registry.hpp"
+#include "impact/run.hpp"
+#include "impact/run_scene.hpp"
+#include "impact/scene.hpp"
+#include "impact/stepper.hpp"
+#include "impact/summary.hpp"
+#include "impact/version.hpp"
