@@ -190,11 +190,8 @@ Report report(const std::vector<impact::Curve>& curves, const Partings& parted,
 }  // namespace
 
 CLI::App* add_work_precision_command(CLI::App& app, WorkPrecisionCommandOptions& o) {
-  CLI::App* cmd = app.add_subcommand(
-      "work-precision",
-      "Work against precision for one scene: each method's errors against the scene's reference "
-      "and the CPU time of its solve over a sweep of h, the observed orders, and a log-log "
-      "figure (the recipe of experiments/work_precision).");
+  CLI::App* cmd =
+      app.add_subcommand("work-precision", "Errors, CPU time and orders over a sweep of h.");
   cmd->add_option("SCENE", o.scene, "Scene file (TOML); see README.md, 'Scenes'")->required();
   cmd->add_option("--methods", o.methods,
                   "The time-steppers, comma-separated, each with its default parameters (the "
