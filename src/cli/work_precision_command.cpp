@@ -24,8 +24,9 @@ namespace {
 // The references part when their distance passes this fraction of an error: beyond, the error
 // is the reference's as much as the method's.
 constexpr double kPartingFraction = 1e-3;
-// Two references delta0 = 1e-10 apart in v0 (estimate_lyapunov), sampled on this step at most.
-constexpr double kPartingStep = 1e-3;
+// Two references delta0 = 1e-10 apart in v0 (estimate_lyapunov), sampled on the experiment's
+// step 1e-3 (T / 100 for a shorter T), and at most kPartingSamples times (a longer T).
+constexpr double kPartingStep = 1e-3, kPartingSamples = 1e6;
 
 // The time-steppers swept over h: not the references, not penalty (which sweeps a tolerance).
 bool steps_over_h(const MethodInfo& m) {
@@ -265,8 +266,8 @@ int run_work_precision_command(const WorkPrecisionCommandOptions& o) {
   const TimingRule rule{o.repeat, o.repeat, 0.0, TimingRule{}.min_sample_seconds};
   const std::vector<impact::Curve> curves = step_curves(
       scene, names, steps, rule, [&](std::size_t done) { progress.update(std::int64_t(done)); });
-  const LyapunovEstimate spread =
-      estimate_lyapunov(scene, scene.T, std::min(kPartingStep, scene.T / 100));
+  const LyapunovEstimate spread = estimate_lyapunov(
+      scene, scene.T, std::max(std::min(kPartingStep, scene.T / 100), scene.T / kPartingSamples));
   const Partings parted = partings(curves, spread);
   progress.finish();
   const Report r = report(curves, parted, spread, scene.T);
