@@ -124,7 +124,11 @@ TEST_CASE("outputs: running out of memory leaves no temporary and says so",
       CHECK(dir.entries() == std::set<std::string>{"s.toml", "uv.csv", "uv.csv.json", "ev.csv"});
     } else {
       refused += r.code == 1;
-      if (r.code == 1) CHECK_THAT(r.err, Contains("out of memory"));
+      // In a window of ~250 KiB above the limit at which the program loads, muparser's libgomp
+      // fails its own start-up, before main(), with "libgomp: Out of memory allocating 8 bytes"
+      // (exit 1); where the window falls depends on the size of the binary.
+      if (r.code == 1)
+        CHECK_THAT(r.err, Contains("out of memory") || Contains("libgomp: Out of memory"));
       CHECK(dir.entries() == std::set<std::string>{"s.toml"});
     }
     std::filesystem::remove(dir / "uv.csv");

@@ -52,11 +52,13 @@ WorkPrecisionPoint measure_scene(const Scene& scene, const std::optional<TimingR
 }
 
 std::vector<WorkPrecisionPoint> sweep_steps(Scene scene, const std::vector<double>& steps,
-                                            const std::optional<TimingRule>& rule) {
+                                            const std::optional<TimingRule>& rule,
+                                            const std::function<void()>& after_point) {
   std::vector<WorkPrecisionPoint> points;
   for (const double h : steps) {
     scene.grid = Grid::covering(scene.T, h);
     points.push_back(measure_scene(scene, rule));
+    if (after_point) after_point();
   }
   return points;
 }

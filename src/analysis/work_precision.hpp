@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -61,6 +62,7 @@ struct WorkPrecisionPoint {
   std::int64_t steps = 0;
   ErrorNorms errors;  // against the exact solution, from one run
   SolveCost cost;
+  double reference_seconds = 0;  // wall time of the reference's work in that run (ErrorObserver)
 };
 
 // Errors from one run of a stepper built by make() against the model's reference (measure_errors:
@@ -73,7 +75,9 @@ WorkPrecisionPoint measure_point(Make&& make, const Model& model, const State& i
   p.h = grid.h;
   p.steps = grid.steps;
   auto stepper = make();
-  p.errors = measure_errors(stepper, model, initial, grid);
+  ErrorObserver observer(model, initial, grid);  // measure_errors(), with the reference's time
+  p.errors = observer.result(simulate(stepper, initial, grid, observer));
+  p.reference_seconds = observer.reference_seconds();
   if (rule) p.cost = time_solve(make, initial, grid, *rule);
   return p;
 }
@@ -82,9 +86,11 @@ WorkPrecisionPoint measure_point(Make&& make, const Model& model, const State& i
 // only when a timing rule is given (the tests measure errors only).
 WorkPrecisionPoint measure_scene(const Scene& scene, const std::optional<TimingRule>& rule);
 
-// A curve: the scene (its method) on the grid of each step h covering its [0, T].
+// A curve: the scene (its method) on the grid of each step h covering its [0, T]; after_point()
+// after each point.
 std::vector<WorkPrecisionPoint> sweep_steps(Scene scene, const std::vector<double>& steps,
-                                            const std::optional<TimingRule>& rule);
+                                            const std::optional<TimingRule>& rule,
+                                            const std::function<void()>& after_point = {});
 
 // The observed order of a measure over a curve: the least-squares slope of log error against
 // log h (fit.hpp's fit_order) over the points whose error is above `floor` (below it the

@@ -95,14 +95,43 @@ const std::vector<double>& swept_steps() {
   return steps;
 }
 
-std::vector<WorkPrecisionPoint> step_curve(const Scene& scene, std::string_view method,
-                                           const std::optional<TimingRule>& rule, double step_min) {
+namespace {
+
+// The scene with the method's default parameters.
+Scene with_method(Scene scene, std::string_view method) {
   const MethodInfo* info = find_method(method);
   if (!info) throw std::out_of_range("no method " + std::string(method));
-  Scene variant = scene;
-  variant.method = info->defaults;
-  return sweep_steps(variant, step_min == kStepMin ? swept_steps() : steps_125(kStepMax, step_min),
-                     rule);
+  scene.method = info->defaults;
+  return scene;
+}
+
+// The swept steps from kStepMax down to step_min.
+std::vector<double> steps_down_to(double step_min) {
+  return step_min == kStepMin ? swept_steps() : steps_125(kStepMax, step_min);
+}
+
+}  // namespace
+
+std::vector<WorkPrecisionPoint> step_curve(const Scene& scene, std::string_view method,
+                                           const std::optional<TimingRule>& rule, double step_min) {
+  return sweep_steps(with_method(scene, method), steps_down_to(step_min), rule);
+}
+
+std::vector<Curve> step_curves(const Scene& scene, const std::vector<std::string>& methods,
+                               const std::vector<double>& steps,
+                               const std::optional<TimingRule>& rule,
+                               const std::function<void(std::size_t)>& after_point) {
+  std::vector<Curve> curves;
+  std::size_t done = 0;
+  for (const std::string& method : methods)
+    curves.push_back({method, true, sweep_steps(with_method(scene, method), steps, rule, [&] {
+                        if (after_point) after_point(++done);
+                      })});
+  return curves;
+}
+
+OrderFit curve_order(const Curve& c, ErrorMeasure m) {
+  return observed_order(c.points, m, kErrorFloor);
 }
 
 Scene penalty_variant(Scene scene, const std::string& stepper, double c_N, double tolerance) {
@@ -117,9 +146,9 @@ Scene penalty_variant(Scene scene, const std::string& stepper, double c_N, doubl
 
 std::vector<Curve> measure_curves(const Scene& scene, const WorkPrecisionScene& spec,
                                   const WorkPrecisionOptions& options) {
-  std::vector<Curve> curves;
-  for (const char* method : {"moreau_jean", "fb_newton", "direct", "direct_located"})
-    curves.push_back({method, true, step_curve(scene, method, options.timing, spec.step_min)});
+  std::vector<Curve> curves =
+      step_curves(scene, {"moreau_jean", "fb_newton", "direct", "direct_located"},
+                  steps_down_to(spec.step_min), options.timing);
   for (const PeerSolver& peer : options.peers)
     if (!peer.time_dependent_force_only || !constant_force(scene.model))
       curves.push_back(peer_curve(scene, peer, spec.step_min, options.timing));

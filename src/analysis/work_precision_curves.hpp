@@ -8,6 +8,8 @@
 // stepper; an event-driven peer such as Siconos's LSODAR).
 #pragma once
 
+#include <cstddef>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -71,6 +73,21 @@ struct WorkPrecisionOptions {
 std::vector<WorkPrecisionPoint> step_curve(const Scene& scene, std::string_view method,
                                            const std::optional<TimingRule>& rule,
                                            double step_min = kStepMin);
+
+// The recipe of one scene, shared by the experiment and `impact work-precision`: each
+// time-stepper with its default parameters over the steps, every point's errors from one run
+// against the scene's reference and the CPU time of its solve alone (time_solve, when a rule is
+// given); after_point(points done) after each point, for a progress line.
+std::vector<Curve> step_curves(const Scene& scene, const std::vector<std::string>& methods,
+                               const std::vector<double>& steps,
+                               const std::optional<TimingRule>& rule,
+                               const std::function<void(std::size_t)>& after_point = {});
+
+// Errors below this are rounding (10^5 steps of a few ulp of 10), not discretisation: they are
+// left out of the fitted orders.
+constexpr double kErrorFloor = 1e-10;
+// The observed order of a measure over a step curve, as the experiment reports it.
+OrderFit curve_order(const Curve& c, ErrorMeasure m);
 // The scene as penalty with this GSL stepper, c_N and rtol = atol = tolerance, on kPenaltyGrid.
 Scene penalty_variant(Scene scene, const std::string& stepper, double c_N, double tolerance);
 

@@ -45,6 +45,12 @@ LyapunovEstimate estimate_lyapunov(Scene scene, double horizon, double h, double
   return e;
 }
 
+std::optional<double> parting_time(const LyapunovEstimate& estimate, double gap) {
+  for (std::size_t i = 0; i < estimate.t.size(); ++i)
+    if (estimate.envelope[i] > gap) return estimate.t[i];
+  return std::nullopt;
+}
+
 std::string lyapunov_csv(const LyapunovEstimate& estimate) {
   std::string text = "t,distance,envelope\n";
   for (std::size_t i = 0; i < estimate.t.size(); ++i)

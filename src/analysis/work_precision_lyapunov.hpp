@@ -7,6 +7,7 @@
 // so that an error made early grows by less than a factor e by the end.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,11 @@ struct LyapunovEstimate {
 // Runs the scene's reference twice over [0, horizon] on the grid of step h.
 LyapunovEstimate estimate_lyapunov(Scene scene, double horizon, double h, double delta0 = 1e-10,
                                    double saturation = 1e-3);
+
+// Where the two runs part by more than `gap`: the first grid time at which the envelope exceeds
+// it; nullopt when they stay within it up to the horizon. An error below the references' own
+// spread measures the reference, not the method.
+std::optional<double> parting_time(const LyapunovEstimate& estimate, double gap);
 
 // t, d(t), its running maximum: the CSV the figure reads.
 std::string lyapunov_csv(const LyapunovEstimate& estimate);

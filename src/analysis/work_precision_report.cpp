@@ -49,7 +49,7 @@ std::string describe(const OrderFit& fit, const Curve& c, ErrorMeasure m) {
 // A step sweep: the order of each measure, and the cost of reaching each target.
 void report_steps(const Curve& c, bool timed, CurveReport& r) {
   for (const ErrorMeasure m : kErrorMeasures) {
-    const OrderFit fit = observed_order(c.points, m, kErrorFloor);
+    const OrderFit fit = curve_order(c, m);
     const std::string key(measure_name(m));
     if (fit.points >= 2) {
       r.entry.insert(key + "_order", fit.order);
@@ -57,7 +57,7 @@ void report_steps(const Curve& c, bool timed, CurveReport& r) {
     }
     r.row += " | " + describe(fit, c, m);
   }
-  const OrderFit sup = observed_order(c.points, ErrorMeasure::sup_u, kErrorFloor);
+  const OrderFit sup = curve_order(c, ErrorMeasure::sup_u);
   for (const double target : kTargets) {
     const std::string cost = timed ? reach(c, ErrorMeasure::sup_u, target, sup) : "-";
     r.row += " | " + cost;

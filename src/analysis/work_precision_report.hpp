@@ -11,10 +11,6 @@
 
 namespace impact {
 
-// Errors below this are rounding (10^5 steps of a few ulp of 10), not discretisation: they are
-// left out of the fitted orders.
-constexpr double kErrorFloor = 1e-10;
-
 struct CurveReport {
   toml::table entry;  // the curve's table in summary.toml
   std::string row;    // its row of orders.md

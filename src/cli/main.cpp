@@ -10,6 +10,7 @@
 #include "cli/plot.hpp"
 #include "cli/run_command.hpp"
 #include "cli/sweep.hpp"
+#include "cli/work_precision_command.hpp"
 #include "impact/output.hpp"
 #include "impact/run.hpp"
 #include "impact/version.hpp"
@@ -111,6 +112,9 @@ int main(int argc, char** argv) {
   impact::cli::SweepOptions sweep;
   CLI::App* sweep_cmd = impact::cli::add_sweep_command(app, sweep);
 
+  impact::cli::WorkPrecisionCommandOptions work_precision;
+  CLI::App* work_precision_cmd = impact::cli::add_work_precision_command(app, work_precision);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -130,6 +134,11 @@ int main(int argc, char** argv) {
     if (sweep_cmd->parsed()) {
       sweep.arguments.assign(argv, argv + argc);
       return impact::cli::run_sweep(sweep);
+    }
+    if (work_precision_cmd->parsed()) {
+      in_place = false;  // the table, its sidecar and the figure appear only when all are whole
+      work_precision.arguments.assign(argv, argv + argc);
+      return impact::cli::run_work_precision_command(work_precision);
     }
     run_options.against_exact = against == "exact";
     run_options.arguments.assign(argv, argv + argc);

@@ -28,12 +28,6 @@ namespace {
 
 constexpr int kFailure = 1, kBadInput = 2;
 
-// gnuplot could not start, failed, or drew nothing (exit code 1).
-class GnuplotError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
 std::string default_out(const std::string& csv) {
   const auto dot = csv.rfind(".csv");
   return csv.substr(0, dot == std::string::npos ? csv.size() : dot) + ".png";
@@ -109,8 +103,8 @@ std::string describe(int status) {
   return "ended with wait status " + std::to_string(status);
 }
 
-// Runs `gnuplot -c /dev/stdin NAME...` with the script on its standard input and its standard
-// output, where the script draws, on `out`. The names become ARG1, ARG2, ...: never commands.
+}  // namespace
+
 void run_gnuplot(const std::string& script, const std::vector<std::string>& names,
                  AtomicFile& out) {
   std::fflush(out.stream());
@@ -162,8 +156,6 @@ void run_gnuplot(const std::string& script, const std::vector<std::string>& name
   if (!out.in_place() && fstat(fileno(out.stream()), &drawn) == 0 && drawn.st_size == 0)
     throw GnuplotError("gnuplot exited normally but drew nothing");
 }
-
-}  // namespace
 
 CLI::App* add_plot_command(CLI::App& app, PlotOptions& o) {
   CLI::App* cmd = app.add_subcommand(

@@ -4,13 +4,28 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <stdexcept>
 #include <string>
+#include <vector>
+
+#include "impact/atomic_file.hpp"
 
 namespace impact::cli {
 
 struct PlotOptions {
   std::string csv, out, against, events;
 };
+
+// gnuplot could not start, failed, or drew nothing (exit code 1).
+class GnuplotError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Runs `gnuplot -c /dev/stdin NAME...` with the script on its standard input and its standard
+// output, where the script draws, on `out`. The names become ARG1, ARG2, ...: never commands.
+// Throws GnuplotError.
+void run_gnuplot(const std::string& script, const std::vector<std::string>& names, AtomicFile& out);
 
 // Adds the `plot` subcommand, whose options fill `options`.
 CLI::App* add_plot_command(CLI::App& app, PlotOptions& options);

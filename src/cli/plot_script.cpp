@@ -83,8 +83,10 @@ void plot_panel(std::ostringstream& gp, const Panel& panel, std::size_t index) {
        << "plot [0:1] [0:1] NaN notitle\nunset label 1\n";
     return;
   }
-  gp << (panel.log_x ? "set logscale x\n" : "unset logscale x\n")
-     << (panel.log_y ? "set logscale y\n" : "unset logscale y\n") << ranges(panel) << plots << '\n';
+  // On a log axis gnuplot's default tics read 0.000010; %g reads 1e-05.
+  gp << (panel.log_x ? "set logscale x\nset format x '%g'\n" : "unset logscale x\nset format x\n")
+     << (panel.log_y ? "set logscale y\nset format y '%g'\n" : "unset logscale y\nset format y\n")
+     << ranges(panel) << plots << '\n';
 }
 
 }  // namespace
