@@ -313,15 +313,18 @@ Ensemble::Ensemble(EnsembleMethod method, std::span<const Model> models,
     if (!constant_force(m))  // the kernels take one constant f per particle
       throw std::invalid_argument("Ensemble: particle " + std::to_string(i) +
                                   " has a time-dependent body force; only a constant f is stepped");
-    if (m.cor && !(*m.cor >= 0 && *m.cor <= 1))
+    // The contact law as Direct and MoreauJean read it (contact_law.hpp): moreau_jean's kernel
+    // reads e = cor_ alone.
+    const RestitutionRule law = restitution_rule(contact_law(
+        m, method == EnsembleMethod::direct ? ContactLaw{SchemeLaw{}} : kElasticReading));
+    if (!(law.cor >= 0 && law.cor <= 1))
       throw std::invalid_argument("Ensemble: particle " + std::to_string(i) + ": COR " +
-                                  std::to_string(*m.cor) + " is outside [0, 1]");
+                                  std::to_string(law.cor) + " is outside [0, 1]");
     phi_[i] = m.phi;
     f_[i] = m.f;
-    // As Direct and MoreauJean read their Model.
-    cor_[i] = method == EnsembleMethod::direct ? m.cor.value_or(0.0) : m.cor.value_or(1.0);
-    has_cor_[i] = m.cor ? -1 : 0;
-    if (m.cor) fixed_point_[i] = restitution_fixed_point(*m.cor);
+    cor_[i] = law.cor;
+    has_cor_[i] = law.has_cor ? -1 : 0;
+    fixed_point_[i] = law.fixed_point;
     gap_[i] = initial[static_cast<std::size_t>(i)].u - m.phi;
     v_[i] = initial[static_cast<std::size_t>(i)].v;
   }
