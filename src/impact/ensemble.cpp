@@ -17,10 +17,13 @@
 #endif
 
 #include "impact/direct.hpp"
+#include "impact/ensemble_isa.hpp"
 #include "impact/moreau_jean.hpp"
 
 namespace impact {
 namespace {
+
+using namespace ensemble_isa;
 
 // GCC/Clang vector types: arithmetic, comparisons and `mask ? a : b` apply lane by lane, which lets
 // direct_step and moreau_jean_step, written for double, run on them unchanged.
@@ -271,24 +274,6 @@ void baseline_moreau_jean(const Columns& c, Eigen::Index n, std::int64_t l, std:
 }
 #endif
 
-enum Level { kBaseline, kAvx2, kAvx512 };
-constexpr std::string_view kLevelNames[] = {"baseline", "avx2", "avx512f"};
-
-bool supported(int level) {
-#if defined(__x86_64__) && defined(__GNUC__)
-  __builtin_cpu_init();
-  if (level == kAvx512) return __builtin_cpu_supports("avx512f");
-  if (level == kAvx2) return __builtin_cpu_supports("avx2");
-#endif
-  return level == kBaseline;
-}
-
-int best_level() {
-  for (int level : {kAvx512, kAvx2})
-    if (supported(level)) return level;
-  return kBaseline;
-}
-
 }  // namespace
 
 #undef IMPACT_NO_CONTRACT
@@ -341,20 +326,11 @@ std::string_view Ensemble::instruction_set() const {
 }
 
 std::vector<std::string_view> Ensemble::supported_instruction_sets() {
-  std::vector<std::string_view> names;
-  for (int level : {kAvx512, kAvx2, kBaseline})
-    if (supported(level)) names.push_back(kLevelNames[level]);
-  return names;
+  return supported_names();
 }
 
 void Ensemble::use(std::string_view instruction_set) {
-  for (int level : {kAvx512, kAvx2, kBaseline})
-    if (kLevelNames[level] == instruction_set && supported(level)) {
-      level_ = level;
-      return;
-    }
-  throw std::invalid_argument("Ensemble: instruction set \"" + std::string(instruction_set) +
-                              "\" is unknown or not supported by this processor");
+  level_ = supported_level(instruction_set);
 }
 
 void Ensemble::keep_summary() {
