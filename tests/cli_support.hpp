@@ -1,6 +1,6 @@
 // Running the real `impact` binary from a test: a scratch directory, the command's exit status
-// and what it wrote. Shared by test_cli.cpp, test_hardening.cpp, test_scene_text.cpp and
-// test_help.cpp.
+// and what it wrote. Shared by test_cli.cpp, test_cli_run.cpp, test_hardening.cpp,
+// test_hardening_output.cpp, test_scene_text.cpp and test_help.cpp.
 #pragma once
 
 #include <sys/wait.h>

@@ -90,7 +90,7 @@ bool temporary_appears(const TempDir& dir, double seconds, bool events = false) 
 
 TEST_CASE("output paths: every signal that ends a run removes the temporary", "[output]") {
   // Every signal whose default action ends the process (signal(7)) but SIGKILL, which cannot be
-  // caught, and SIGXFSZ, which impact ignores (test_hardening.cpp, "a file size limit ...").
+  // caught, and SIGXFSZ, which impact ignores (test_hardening_output.cpp, "a file size limit ...").
   std::vector<int> signals{SIGHUP,  SIGINT,  SIGQUIT, SIGILL,  SIGTRAP,   SIGABRT, SIGUSR1,
                            SIGUSR2, SIGPIPE, SIGALRM, SIGTERM, SIGSTKFLT, SIGXCPU, SIGVTALRM,
                            SIGPROF, SIGIO,   SIGPWR,  SIGSYS,  SIGRTMIN,  SIGRTMAX};
@@ -297,7 +297,7 @@ TEST_CASE("output paths: a read-only directory is named, exit 2", "[output]") {
 
 TEST_CASE("output paths: a numerical failure tells whether rows went out", "[output]") {
   TempDir dir;
-  // fb_newton stops at step 4 (test_cli.cpp, "a numerical failure exits 1, ..."): rows for
+  // fb_newton stops at step 4 (test_cli_run.cpp, "a numerical failure exits 1, ..."): rows for
   // l = 0..3 have been written by then.
   dir.write("fail.toml",
             "[initial]\nu0 = 0.005\nv0 = -1.0\n[time]\nT = 0.01\nh = 0.001\n"

@@ -111,9 +111,7 @@ class BasicDirect {
   BasicDirect(const Model& model, double h, const DirectParams& params)
       : phi_(model.phi),
         f_(model.f),
-        cor_(model.cor.value_or(0.0)),
-        has_cor_(model.cor),
-        fixed_point_(model.cor ? restitution_fixed_point(*model.cor) : -1),
+        restitution_(restitution_rule(contact_law(model, SchemeLaw{}))),
         h_(h),
         contact_factor_(2 / (h * h)),
         flight_(model, h) {
@@ -156,8 +154,8 @@ class BasicDirect {
       lanes_.contact_force = 0;
       lanes_.since = since;
     } else {  // a contact step: the next free flight starts at t_{l+1}
-      direct_contact(lanes_, since, gap_free, v_free, cor_, has_cor_, fixed_point_, h_,
-                     contact_factor_);
+      direct_contact(lanes_, since, gap_free, v_free, restitution_.cor, restitution_.has_cor,
+                     restitution_.fixed_point, h_, contact_factor_);
       anchor_l_ = l + 1;
       if constexpr (kTimeDependent)
         flight_.start(l + 1, {0.0, lanes_.v});
@@ -177,9 +175,8 @@ class BasicDirect {
   };
   struct NoRepeats {};
 
-  double phi_, f_, cor_;
-  bool has_cor_;
-  std::int64_t fixed_point_;  // restitution_fixed_point(cor_), restitution.hpp
+  double phi_, f_;
+  RestitutionRule restitution_;  // the contact law (contact_law.hpp) as direct_contact reads it
   double h_;
   double contact_factor_;  // 2/h^2 of (5-1)
   DirectLanes<double> lanes_;
@@ -199,9 +196,7 @@ class DirectAsPrinted {
  public:
   DirectAsPrinted(const Model& model, double h, const DirectParams&)
       : phi_(model.phi),
-        cor_(model.cor.value_or(0.0)),
-        has_cor_(model.cor),
-        fixed_point_(model.cor ? restitution_fixed_point(*model.cor) : -1),
+        restitution_(restitution_rule(contact_law(model, SchemeLaw{}))),
         h_(h),
         flight_(model, h) {}
 
@@ -219,16 +214,15 @@ class DirectAsPrinted {
     info.contact_force = 2 / h_ * ((phi_ - s.u) / h_ - s.v) - f;
     const double v_scheme = 2 / h_ * (phi_ - s.u) - s.v;
     double v_next;
-    velocity_after_step(has_cor_, cor_, fixed_point_, info.contact_force > 0, s.v, v_scheme,
-                        v_next);
+    velocity_after_step(restitution_.has_cor, restitution_.cor, restitution_.fixed_point,
+                        info.contact_force > 0, s.v, v_scheme, v_next);
     s = {phi_, v_next};
     return info;
   }
 
  private:
-  double phi_, cor_;
-  bool has_cor_;
-  std::int64_t fixed_point_;  // restitution_fixed_point(cor_), restitution.hpp
+  double phi_;
+  RestitutionRule restitution_;  // the contact law (contact_law.hpp), as in BasicDirect
   double h_;
   SchemeFlight flight_;  // f^l
 };

@@ -20,6 +20,7 @@
 
 #include <cstdint>
 
+#include "impact/contact_law.hpp"
 #include "impact/force.hpp"
 #include "impact/free_flight.hpp"
 #include "impact/model.hpp"
@@ -69,7 +70,7 @@ class DirectLocated {
   DirectLocated(const Model& model, double h, const DirectLocatedParams&)
       : phi_(model.phi),
         f_(model.f),
-        e_(model.cor.value_or(1.0)),
+        e_(newton_e(contact_law(model, kElasticReading))),
         h_(h),
         constant_(constant_force(model)),
         flight_(model, h),

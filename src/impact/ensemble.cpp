@@ -17,10 +17,13 @@
 #endif
 
 #include "impact/direct.hpp"
+#include "impact/ensemble_isa.hpp"
 #include "impact/moreau_jean.hpp"
 
 namespace impact {
 namespace {
+
+using namespace ensemble_isa;
 
 // GCC/Clang vector types: arithmetic, comparisons and `mask ? a : b` apply lane by lane, which lets
 // direct_step and moreau_jean_step, written for double, run on them unchanged.
@@ -271,24 +274,6 @@ void baseline_moreau_jean(const Columns& c, Eigen::Index n, std::int64_t l, std:
 }
 #endif
 
-enum Level { kBaseline, kAvx2, kAvx512 };
-constexpr std::string_view kLevelNames[] = {"baseline", "avx2", "avx512f"};
-
-bool supported(int level) {
-#if defined(__x86_64__) && defined(__GNUC__)
-  __builtin_cpu_init();
-  if (level == kAvx512) return __builtin_cpu_supports("avx512f");
-  if (level == kAvx2) return __builtin_cpu_supports("avx2");
-#endif
-  return level == kBaseline;
-}
-
-int best_level() {
-  for (int level : {kAvx512, kAvx2})
-    if (supported(level)) return level;
-  return kBaseline;
-}
-
 }  // namespace
 
 #undef IMPACT_NO_CONTRACT
@@ -313,15 +298,18 @@ Ensemble::Ensemble(EnsembleMethod method, std::span<const Model> models,
     if (!constant_force(m))  // the kernels take one constant f per particle
       throw std::invalid_argument("Ensemble: particle " + std::to_string(i) +
                                   " has a time-dependent body force; only a constant f is stepped");
-    if (m.cor && !(*m.cor >= 0 && *m.cor <= 1))
+    // The contact law as Direct and MoreauJean read it (contact_law.hpp): moreau_jean's kernel
+    // reads e = cor_ alone.
+    const RestitutionRule law = restitution_rule(contact_law(
+        m, method == EnsembleMethod::direct ? ContactLaw{SchemeLaw{}} : kElasticReading));
+    if (!(law.cor >= 0 && law.cor <= 1))
       throw std::invalid_argument("Ensemble: particle " + std::to_string(i) + ": COR " +
-                                  std::to_string(*m.cor) + " is outside [0, 1]");
+                                  std::to_string(law.cor) + " is outside [0, 1]");
     phi_[i] = m.phi;
     f_[i] = m.f;
-    // As Direct and MoreauJean read their Model.
-    cor_[i] = method == EnsembleMethod::direct ? m.cor.value_or(0.0) : m.cor.value_or(1.0);
-    has_cor_[i] = m.cor ? -1 : 0;
-    if (m.cor) fixed_point_[i] = restitution_fixed_point(*m.cor);
+    cor_[i] = law.cor;
+    has_cor_[i] = law.has_cor ? -1 : 0;
+    fixed_point_[i] = law.fixed_point;
     gap_[i] = initial[static_cast<std::size_t>(i)].u - m.phi;
     v_[i] = initial[static_cast<std::size_t>(i)].v;
   }
@@ -338,20 +326,11 @@ std::string_view Ensemble::instruction_set() const {
 }
 
 std::vector<std::string_view> Ensemble::supported_instruction_sets() {
-  std::vector<std::string_view> names;
-  for (int level : {kAvx512, kAvx2, kBaseline})
-    if (supported(level)) names.push_back(kLevelNames[level]);
-  return names;
+  return supported_names();
 }
 
 void Ensemble::use(std::string_view instruction_set) {
-  for (int level : {kAvx512, kAvx2, kBaseline})
-    if (kLevelNames[level] == instruction_set && supported(level)) {
-      level_ = level;
-      return;
-    }
-  throw std::invalid_argument("Ensemble: instruction set \"" + std::string(instruction_set) +
-                              "\" is unknown or not supported by this processor");
+  level_ = supported_level(instruction_set);
 }
 
 void Ensemble::keep_summary() {

@@ -70,9 +70,9 @@ class Ensemble {
   Eigen::Index size_, padded_;  // padded_: a whole number of blocks of every instruction set
   std::int64_t steps_done_ = 0;
   // Per particle, padded with resting particles to a whole number of vector blocks.
-  Eigen::ArrayXd phi_, f_, cor_;  // cor_: the COR (direct, 0 without one) or e (moreau_jean)
-  Eigen::Array<std::int64_t, Eigen::Dynamic, 1> has_cor_;  // -1 where the model has a COR
-  // direct's restitution_fixed_point of the COR (restitution.hpp), -1 without one
+  Eigen::ArrayXd phi_, f_, cor_;  // cor_: RestitutionRule::cor of the contact law (restitution.hpp)
+  Eigen::Array<std::int64_t, Eigen::Dynamic, 1> has_cor_;  // -1 where Newton's law acts
+  // RestitutionRule::fixed_point (restitution.hpp), -1 where Newton's law does not act
   Eigen::Array<std::int64_t, Eigen::Dynamic, 1> fixed_point_;
   Eigen::ArrayXd gap_, v_, force_;  // gap u - phi, as the kernels step it
   Eigen::ArrayXd u_;  // the initial u, then phi + gap after each advance(), as the solvers return u

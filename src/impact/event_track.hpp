@@ -38,6 +38,7 @@
 #include <string_view>
 #include <utility>
 
+#include "impact/contact_law.hpp"
 #include "impact/events.hpp"
 #include "impact/flight_search.hpp"
 #include "impact/model.hpp"
@@ -148,7 +149,10 @@ class EventTrack : public EventTrackOf<ClosedFormLaw> {
 
 template <class Law>
 EventTrackOf<Law>::EventTrackOf(Law law, const Model& model, const State& initial, double t0)
-    : law_(std::move(law)), phi_(model.phi), e_(model.cor.value_or(1.0)), t_now_(t0) {
+    : law_(std::move(law)),
+      phi_(model.phi),
+      e_(newton_e(contact_law(model, kElasticReading))),
+      t_now_(t0) {
   if (!std::isfinite(model.phi) || !std::isfinite(model.f) || !std::isfinite(initial.u) ||
       !std::isfinite(initial.v) || !std::isfinite(t0))
     throw std::invalid_argument("exact: phi, f, u0, v0 and t0 must be finite");

@@ -9,6 +9,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "impact/contact_law.hpp"
+
 namespace impact {
 
 namespace {
@@ -84,7 +86,7 @@ struct ExactSolution::Impl {
 };
 
 ExactSolution::ExactSolution(const Model& model, const State& initial)
-    : model_(model), initial_(initial), e_(model.cor.value_or(1.0)) {
+    : model_(model), initial_(initial), e_(newton_e(contact_law(model, kElasticReading))) {
   if (!std::isfinite(model.phi) || !std::isfinite(model.f) || !std::isfinite(initial.u) ||
       !std::isfinite(initial.v))
     throw std::invalid_argument("ExactSolution: phi, f, u0 and v0 must be finite");
@@ -303,7 +305,7 @@ StepInfo ExactStepper::closed_form_step(State& s, double t0, double t1) {
 
 // The impacts in (t0, t1] and the start of the rest, at grid time l0 h + t.
 void ExactStepper::emit_closed_form_events(double t0, double t1) const {
-  const double origin = static_cast<double>(l0_) * h_, e = model_.cor.value_or(1.0);
+  const double origin = static_cast<double>(l0_) * h_, e = solution_->e();
   const auto rest = solution_->rest_time();
   const std::int64_t first = solution_->impacts_until(t0) + 1, last = solution_->impacts_until(t1);
   const double V1 = solution_->impact_speed(1).value_or(0.0);

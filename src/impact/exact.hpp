@@ -56,6 +56,8 @@ class ExactSolution {
   std::optional<double> impact_speed(std::int64_t k) const;
   // From this time on the particle rests on the floor (Zeno time, or the plastic impact time).
   std::optional<double> rest_time() const;
+  // e of Newton's law at each impact: the COR, or 1 without one (contact_law.hpp).
+  double e() const { return e_; }
 
   // The free flight that holds a time t with 0 < t < rest_time(): at(t) is flight_state(flight, t)
   // for every t in [begin, end), so a caller that samples in order finds it once per flight.

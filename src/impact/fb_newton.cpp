@@ -145,8 +145,8 @@ StepInfo FbNewton::do_step(State& s, std::int64_t l) {
     // below the floor: the same steps as in direct, not those the smoothing alone pushes.
     const double v_before = gap_.v;
     gap_.u = x;
-    velocity_after_step(model_.cor.has_value(), model_.cor.value_or(0.0), fixed_point_, x_free < 0,
-                        v_before, v_scheme, gap_.v);
+    velocity_after_step(restitution_.has_cor, restitution_.cor, restitution_.fixed_point,
+                        x_free < 0, v_before, v_scheme, gap_.v);
     flight_.start(l + 1, gap_);
     if (flight_.constant_force()) repeats_.contact(l, gap_);
   }

@@ -30,7 +30,7 @@ class FbNewton {
         h_(h),
         params_(params),
         sqrt_eps_(std::sqrt(params.epsilon)),
-        fixed_point_(model.cor ? restitution_fixed_point(*model.cor) : -1),
+        restitution_(restitution_rule(contact_law(model, SchemeLaw{}))),
         flight_(model, h) {}
 
   // Works in gap coordinates (u - phi, v) from here on, see do_step.
@@ -52,9 +52,9 @@ class FbNewton {
   Model model_;
   double h_;
   FbNewtonParams params_;
-  double sqrt_eps_;           // the velocity scale of the smoothing, see step()
-  std::int64_t fixed_point_;  // restitution_fixed_point of the COR, restitution.hpp
-  SchemeFlight flight_;       // in gap coordinates (u - phi, v), see do_step()
+  double sqrt_eps_;              // the velocity scale of the smoothing, see step()
+  RestitutionRule restitution_;  // the contact law (contact_law.hpp) as restitution.hpp reads it
+  SchemeFlight flight_;          // in gap coordinates (u - phi, v), see do_step()
   // The state at t_l in gap coordinates as the last step computed it (the caller's u is
   // phi + gap, rounded).
   State gap_;

@@ -16,10 +16,10 @@ struct State {
   double v = 0.0;
 };
 
-// The physical data every solver needs. An absent body force is f = 0; an absent COR means
-// "no restitution law": each scheme keeps its own impact behaviour (see
-// paper_notes/restitution.md), and the exact reference is elastic (COR = 1), the limit in which
-// Lemma 1 conserves energy.
+// The physical data every solver needs. An absent body force is f = 0. What an absent COR means
+// for each family of methods (no restitution law for the paper's scheme, elastic for the
+// event-driven readings) is the contact law's table, contact_law.hpp, through which every solver
+// reads the COR.
 // The time-dependent part of the body force, amplitude sin(omega t + phase): in the frame of a
 // table that vibrates as y = a sin(omega t), amplitude = a omega^2 (vibrating_table).
 struct Harmonic {

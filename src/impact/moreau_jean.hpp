@@ -3,13 +3,14 @@
 //   v^{l+1} = v^l + h f^l + P^{l+1},  u^{l+1} = u^l + h (theta v^{l+1} + (1 - theta) v^l),
 //   if the contact is active (u^l - phi + gamma h v^l <= 0, gamma = 1/2):
 //     0 <= v^{l+1} + e v^l  ⟂  P^{l+1} >= 0,
-// with e = COR, or e = 1 when the scene gives none (the elastic limit of the exact reference).
+// with e = COR, or e = 1 when the scene gives none (the elastic reading of contact_law.hpp).
 // The position is not projected, so u may dip below phi by O(h |v|).
 #pragma once
 
 #include <cstdint>
 #include <type_traits>
 
+#include "impact/contact_law.hpp"
 #include "impact/model.hpp"
 #include "impact/repeats.hpp"
 #include "impact/scheme_flight.hpp"
@@ -67,7 +68,7 @@ class BasicMoreauJean {
         f_(model.f),
         h_(h),
         theta_(params.theta),
-        e_(model.cor.value_or(1.0)),
+        e_(newton_e(contact_law(model, kElasticReading))),
         force_(model, h) {}
 
   void initialize(const State& s, std::int64_t l) {

@@ -17,6 +17,7 @@
 #include <string>
 #include <string_view>
 
+#include "impact/contact_law.hpp"
 #include "impact/force.hpp"
 #include "impact/gsl_errors.hpp"
 
@@ -148,7 +149,8 @@ Penalty::Impl::Impl(const Model& model, double grid_h, const PenaltyParams& para
       constant(force.constant()),
       phi(model.phi),
       h(grid_h),
-      c_N(params.stiffness) {
+      // The compliance law (contact_law.hpp), which refuses a COR.
+      c_N(std::get<ComplianceLaw>(contact_law(model, ComplianceLaw{params.stiffness})).stiffness) {
   if (!(h > 0.0) || !std::isfinite(h)) throw std::invalid_argument("Penalty: h must be > 0");
   if (!(c_N > 0.0) || !std::isfinite(c_N))
     throw std::invalid_argument("Penalty: stiffness c_N must be > 0 and finite");
@@ -266,7 +268,7 @@ Penalty::~Penalty() = default;
 // rejected trial steps. A failure (more than kMaxOdeSteps steps, a tolerance GSL cannot meet, a
 // non-finite state) gives converged = false and leaves s at its t_l value (finite if it was).
 //
-// The COR of the model is not used: compliance is its own impact law (elastic here, COR = 1).
+// Compliance is its own impact law, elastic: the constructor refuses a COR (contact_law.hpp).
 void Penalty::initialize(const State& s, std::int64_t l) {
   Impl& m = *impl_;
   gsl_odeiv2_driver_reset(m.driver.get());

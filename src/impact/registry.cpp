@@ -133,4 +133,19 @@ AnyStepper make_stepper(const Model& model, double h, const MethodParams& params
       params);
 }
 
+ContactLaw method_law(const Model& model, const MethodParams& params) {
+  return std::visit(
+      [&](const auto& p) -> ContactLaw {
+        using Params = std::decay_t<decltype(p)>;
+        if constexpr (std::is_same_v<Params, DirectParams> ||
+                      std::is_same_v<Params, FbNewtonParams>)
+          return contact_law(model, SchemeLaw{});
+        else if constexpr (std::is_same_v<Params, PenaltyParams>)
+          return contact_law(model, ComplianceLaw{p.stiffness});
+        else
+          return contact_law(model, kElasticReading);
+      },
+      params);
+}
+
 }  // namespace impact

@@ -7,6 +7,7 @@
 #include <variant>
 #include <vector>
 
+#include "impact/contact_law.hpp"
 #include "impact/direct.hpp"
 #include "impact/direct_located.hpp"
 #include "impact/event_driven.hpp"
@@ -72,5 +73,10 @@ inline std::string_view method_name(const MethodParams& params) {
 // The solver for one model and step; throws std::invalid_argument for parameters out of range
 // and for what the method does not honour (a COR given to penalty).
 AnyStepper make_stepper(const Model& model, double h, const MethodParams& params);
+
+// The contact law a method applies to the model's floor, its family's reading of contact_law.hpp:
+// the law its stepper resolves in its constructor. Throws std::invalid_argument for a COR given to
+// penalty.
+ContactLaw method_law(const Model& model, const MethodParams& params);
 
 }  // namespace impact

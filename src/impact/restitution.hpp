@@ -20,12 +20,30 @@
 #include <cstdint>
 #include <cstring>
 
+#include "impact/contact_law.hpp"
+
 namespace impact {
 
 // The largest m < 2^52 such that the rounded product -COR v is -v, bit for bit, for every
 // v = +-k 2^-1074, k = 0..m (the subnormals and zero up to m units), as this processor rounds it;
 // -1 when not even +-0 maps to its negative (COR negative or not a number).
 std::int64_t restitution_fixed_point(double cor);
+
+// A contact law as the rule below reads it (direct, fb_newton, the ensemble): whether Newton's law
+// acts (has_cor), its COR (0 where it does not act, never read there) and restitution_fixed_point
+// of it (-1 where it does not act). In this order, the members the steppers kept before the law
+// was a value, so that their step reads the same layout.
+struct RestitutionRule {
+  double cor = 0.0;
+  bool has_cor = false;
+  std::int64_t fixed_point = -1;
+};
+
+inline RestitutionRule restitution_rule(const ContactLaw& law) {
+  const auto* newton = std::get_if<NewtonLaw>(&law);
+  if (!newton) return {};
+  return {newton->e, true, restitution_fixed_point(newton->e)};
+}
 
 // Real is double (Mask = bool, Bits = std::int64_t) or a vector of lanes (Mask and Bits its
 // integer vector), so that direct and its ensemble share this one rule (see direct.hpp). The
