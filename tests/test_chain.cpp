@@ -265,3 +265,21 @@ TEST_CASE("chain: bad parameters and non-finite values are refused or reported",
                              [](std::int64_t, const ChainState&, const StepInfo&) {}),
                     Catch::Contains("step 0") && Catch::Contains("non-finite result x1 = "));
 }
+
+TEST_CASE("chain: the README's example runs", "[chain][regression]") {
+  // README.md, "Beyond one particle: a two-mass chain", as written there.
+  const impact::Chain chain{
+      .m1 = 1, .m2 = 0.5, .k = 200, .ell = 1, .g = -9.81, .phi = 0, .cor = 0.8};
+  impact::ChainState start;
+  start.q << 1.0, 2.0;  // x1, x2; v = 0
+  impact::ChainMoreauJean stepper(chain, 1e-3, impact::MoreauJeanParams{.theta = 0.5});
+  std::int64_t contact_steps = 0;
+  const RunSummary summary =
+      impact::simulate(stepper, start, impact::Grid::covering(2.0, 1e-3),
+                       [&](std::int64_t, const impact::ChainState&, const impact::StepInfo& info) {
+                         contact_steps += info.contact_force > 0;
+                       });
+  CHECK(summary.steps == 2000);
+  CHECK(summary.contact_steps == contact_steps);
+  CHECK(contact_steps >= 5);
+}

@@ -39,22 +39,20 @@ ChainReference::ChainReference(const Chain& chain, const ChainState& initial,
     const double c2w2 = c2_ * w_ * w_;
     // |gap''| <= |g| + c2 w^2 max |d|: the bound that certifies the search's steps.
     const double bound = std::fabs(chain.g) + c2w2 * amplitude;
-    const auto at_gaps = [](const ChainReference* self, double t) {
-      return self->gaps_at(self->flights_.back(), t);
-    };
-    struct Path {
-      const ChainReference* self;
-      decltype(at_gaps) evaluate;
+    // The lower mass's gap and velocity, and its acceleration, for search_contact.
+    struct LowerMass {
+      const ChainReference& self;
+      const Flight& flight;
       double g, c2w2, ell;
       State at(double t) const {
-        const ChainState s = evaluate(self, t);
+        const ChainState s = self.gaps_at(flight, t);
         return {s.q(0), s.v(0)};
       }
       double force(double t) const {
-        const ChainState s = evaluate(self, t);
+        const ChainState s = self.gaps_at(flight, t);
         return g + c2w2 * (s.q(1) - s.q(0) - ell);
       }
-    } path{this, at_gaps, chain.g, c2w2, chain.ell};
+    } path{*this, flight, chain.g, c2w2, chain.ell};
     double certified = flight.t0, checked = flight.t0;
     const std::optional<Contact> contact =
         search_contact(path, bound, certified, checked, t_end_, budget);
