@@ -34,10 +34,11 @@ StepInfo ChainMoreauJean::do_step(ChainState& s, std::int64_t) {
   // The spring acts on the stretch alone, so the gaps give it without phi's rounding.
   const double spring = chain_.k * (gap_(1) - gap_(0) - chain_.ell);
   const double spring_rate = chain_.k * (v_(1) - v_(0));  // the stretch's rate under K v
-  const double damp = h_ * h_ * theta_ * (1 - theta_);
+  // -h^2 theta (1 - theta) K v^l: the part of theta h F(q^{l+1}) that v^l moves.
+  const double carried = h_ * h_ * theta_ * (1 - theta_);
   const Eigen::Vector2d momentum(
-      chain_.m1 * v_(0) + h_ * (spring + chain_.m1 * chain_.g) + damp * spring_rate,
-      chain_.m2 * v_(1) + h_ * (chain_.m2 * chain_.g - spring) - damp * spring_rate);
+      chain_.m1 * v_(0) + h_ * (spring + chain_.m1 * chain_.g) + carried * spring_rate,
+      chain_.m2 * v_(1) + h_ * (chain_.m2 * chain_.g - spring) - carried * spring_rate);
   const Eigen::Vector2d v_free = w_inverse_ * momentum;
 
   // The one particle's law on the constraint velocity x1': its jump is D P.

@@ -33,8 +33,6 @@ class ChainMoreauJean {
   // LCP is solved in closed form).
   StepInfo do_step(ChainState& s, std::int64_t l);
 
-  double delassus() const { return delassus_; }
-
  private:
   Chain chain_;
   double h_, theta_, e_;
