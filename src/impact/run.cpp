@@ -10,11 +10,19 @@ void throw_step_failure(std::int64_t l, double t, State s, StepInfo info) {
 
 void throw_step_failure(std::int64_t l, double t, State s, StepInfo info,
                         const std::string& detail) {
+  std::ostringstream state;
+  state.precision(17);
+  state << "u = " << s.u << ", v = " << s.v;
+  throw_step_failure(l, t, state.str(), info, detail);
+}
+
+void throw_step_failure(std::int64_t l, double t, const std::string& state, StepInfo info,
+                        const std::string& detail) {
   std::ostringstream msg;
   msg.precision(17);
   msg << "step " << l << " (from t = " << t << "): ";
   if (info.converged)
-    msg << "non-finite result u = " << s.u << ", v = " << s.v << ", N = " << info.contact_force
+    msg << "non-finite result " << state << ", N = " << info.contact_force
         << (detail.empty() ? "" : ": ") << detail;
   else if (info.iterations > 0)  // an iterative solve: how far it got, then the stepper's account
     msg << "the solve did not converge after " << info.iterations << " iterations"

@@ -4,6 +4,9 @@
 //   StepInfo do_step(State& s, std::int64_t l);      // s: the state at t_l that the stepper
 //                                                    // produced (or was initialized with);
 //                                                    // advanced to t_{l+1}
+// A stepper over another state than the one particle's (the two-mass chain, chain.hpp) names it
+// `using StateType = ...;`: simulate() (run.hpp) then steps that state; the type needs
+// `bool finite() const` and `std::string describe(const StateType&)` for the failure message.
 // A stepper may carry state of its own between steps (direct's free-flight anchor, fb_newton's
 // gap, penalty's ODE driver); to start from any other state, call initialize() again. Adding a
 // method: write its file (a stepper and a plain parameter struct), a row in registry.cpp, and its
@@ -19,8 +22,23 @@
 
 namespace impact {
 
+// The state a stepper advances: its StateType, else the one particle's State.
 template <class S>
-concept Stepper = requires(S& stepper, State& s, const State& cs, std::int64_t l) {
+struct StepperState {
+  using type = State;
+};
+template <class S>
+requires requires {
+  typename S::StateType;
+}
+struct StepperState<S> {
+  using type = typename S::StateType;
+};
+template <class S>
+using StateOf = typename StepperState<S>::type;
+
+template <class S>
+concept Stepper = requires(S& stepper, StateOf<S>& s, const StateOf<S>& cs, std::int64_t l) {
   stepper.initialize(cs, l);
   { stepper.do_step(s, l) } -> std::same_as<StepInfo>;
 };

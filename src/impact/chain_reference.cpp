@@ -1,0 +1,153 @@
+#include "impact/chain_reference.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "impact/flight_search.hpp"
+#include "impact/run.hpp"
+
+namespace impact {
+
+ChainReference::ChainReference(const Chain& chain, const ChainState& initial,
+                               const ChainReferenceParams& params)
+    : chain_(chain), e_(chain.cor.value_or(1.0)), t_end_(params.t_end) {
+  check_chain(chain);
+  check_chain_state(chain, initial);
+  if (e_ == 0)
+    throw std::invalid_argument(
+        "chain reference: cor = 0 is out of range: (0, 1] (the lower mass would rest on the "
+        "floor, which the reference does not follow)");
+  if (!(std::isfinite(t_end_) && t_end_ >= 0))
+    throw std::invalid_argument("chain reference: t_end = " + std::to_string(t_end_) +
+                                " is out of range: finite, >= 0");
+  c1_ = chain.m1 / (chain.m1 + chain.m2);
+  c2_ = chain.m2 / (chain.m1 + chain.m2);
+  w_ = std::sqrt(chain.k * (1 / chain.m1 + 1 / chain.m2));
+  ChainState gaps = initial;
+  gaps.q = initial.q.array() - chain.phi;
+  flights_.push_back({0.0, gaps});
+
+  long budget = params.max_search_steps;
+  for (;;) {
+    const Flight& flight = flights_.back();
+    const double d0 = flight.s0.q(1) - flight.s0.q(0) - chain.ell;
+    const double rate0 = flight.s0.v(1) - flight.s0.v(0);
+    const double amplitude = w_ > 0 ? std::hypot(d0, rate0 / w_) : 0.0;
+    const double c2w2 = c2_ * w_ * w_;
+    // |gap''| <= |g| + c2 w^2 max |d|: the bound that certifies the search's steps.
+    const double bound = std::fabs(chain.g) + c2w2 * amplitude;
+    // The lower mass's gap and velocity, and its acceleration, for search_contact.
+    struct LowerMass {
+      const ChainReference& self;
+      const Flight& flight;
+      double g, c2w2, ell;
+      State at(double t) const {
+        const ChainState s = self.gaps_at(flight, t);
+        return {s.q(0), s.v(0)};
+      }
+      double force(double t) const {
+        const ChainState s = self.gaps_at(flight, t);
+        return g + c2w2 * (s.q(1) - s.q(0) - ell);
+      }
+    } path{*this, flight, chain.g, c2w2, chain.ell};
+    double certified = flight.t0, checked = flight.t0;
+    const std::optional<Contact> contact =
+        search_contact(path, bound, certified, checked, t_end_, budget);
+    if (!contact) {
+      if (budget <= 0)
+        throw NumericalError(
+            "chain reference: the impact search took more than " +
+                std::to_string(params.max_search_steps) +
+                " certified steps (a grazing flight?) before t = " + std::to_string(certified),
+            false);
+      return;  // no impact before t_end
+    }
+    const double t = std::max(contact->t - contact->late, flight.t0);
+    if (t > t_end_) return;
+    if (contact->v == 0 && t == flight.t0)
+      throw NumericalError("chain reference: the lower mass rests on the floor at t = " +
+                               std::to_string(t) + ", which the reference does not follow",
+                           false);
+    if (static_cast<std::int64_t>(impacts_.size()) >= params.max_impacts)
+      throw NumericalError("chain reference: more than " + std::to_string(params.max_impacts) +
+                               " impacts before t = " + std::to_string(t) +
+                               " (an accumulation of impacts?)",
+                           false);
+    ChainState after = gaps_at(flight, t);
+    after.q(0) = 0;  // on the floor
+    const double v_before = std::fmin(contact->v, 0.0);
+    after.v(0) = -e_ * v_before;  // Newton's law, (2-3)/Section 5.2
+    impacts_.push_back({t, v_before, after.v(0)});
+    flights_.push_back({t, after});
+  }
+}
+
+ChainState ChainReference::gaps_at(const Flight& flight, double t) const {
+  const double tau = t - flight.t0;
+  const ChainState& s0 = flight.s0;
+  const double d0 = s0.q(1) - s0.q(0) - chain_.ell;
+  const double rate0 = s0.v(1) - s0.v(0);
+  // The stretch's departure from its linear motion, d(tau) - d0 - d'(0) tau, and its rate, in
+  // forms without cancellation: cos x - 1 = -2 sin^2(x/2).
+  double bend = 0, bend_rate = 0;
+  if (w_ > 0) {
+    const double x = w_ * tau, half = std::sin(x / 2), sine = std::sin(x);
+    bend = -2 * d0 * half * half + rate0 * (sine - x) / w_;
+    bend_rate = -d0 * w_ * sine - 2 * rate0 * half * half;
+  }
+  const double fall = chain_.g * tau * tau / 2;
+  ChainState s;
+  s.q(0) = s0.q(0) + s0.v(0) * tau + fall - c2_ * bend;
+  s.q(1) = s0.q(1) + s0.v(1) * tau + fall + c1_ * bend;
+  s.v(0) = s0.v(0) + chain_.g * tau - c2_ * bend_rate;
+  s.v(1) = s0.v(1) + chain_.g * tau + c1_ * bend_rate;
+  return s;
+}
+
+ChainState ChainReference::at(double t) const {
+  const auto after = std::upper_bound(flights_.begin(), flights_.end(), t,
+                                      [](double x, const Flight& f) { return x < f.t0; });
+  const Flight& flight = after == flights_.begin() ? flights_.front() : *(after - 1);
+  ChainState s = gaps_at(flight, std::max(t, flight.t0));
+  s.q = s.q.array() + chain_.phi;
+  return s;
+}
+
+double ChainReference::impulse(double t0, double t1) const {
+  const auto by_time = [](const ChainImpact& impact, double x) { return impact.t <= x; };
+  const auto first = std::lower_bound(impacts_.begin(), impacts_.end(), t0, by_time);
+  const auto last = std::lower_bound(impacts_.begin(), impacts_.end(), t1, by_time);
+  double sum = 0;
+  for (auto it = first; it < last; ++it) sum += chain_.m1 * (it->v_after - it->v_before);
+  return sum;
+}
+
+ChainReferenceStepper::ChainReferenceStepper(const Chain& chain, double h,
+                                             const ChainReferenceParams& params)
+    : chain_(chain), h_(h), params_(params) {
+  check_chain(chain);
+  if (!(std::isfinite(h) && h > 0))
+    throw std::invalid_argument("chain reference: h = " + std::to_string(h) +
+                                " is out of range: finite, > 0");
+}
+
+void ChainReferenceStepper::initialize(const ChainState& s, std::int64_t l) {
+  start_ = l;
+  ChainReferenceParams params = params_;
+  params.t_end = std::max(params_.t_end - static_cast<double>(l) * h_, 0.0);
+  reference_.emplace(chain_, s, params);
+}
+
+StepInfo ChainReferenceStepper::do_step(ChainState& s, std::int64_t l) {
+  const double t0 = static_cast<double>(l - start_) * h_,
+               t1 = static_cast<double>(l + 1 - start_) * h_;
+  s = reference_->at(t1);
+  StepInfo info;
+  info.contact_force = reference_->impulse(t0, t1) / h_;
+  return info;
+}
+
+}  // namespace impact
