@@ -55,7 +55,7 @@ SchemeForce& SchemeForce::operator=(const SchemeForce& other) {
 }
 
 double SchemeForce::expression_integral(const ForceFunction& expression, std::int64_t l, double h,
-                                        double phi, const State& at) {
+                                        double phi, State at) {
   const double t0 = static_cast<double>(l) * h, t1 = static_cast<double>(l + 1) * h;
   if (!expression.state_dependent()) return expression.integral(t0, t1);
   return expression.integral(t0, t1, {phi + at.u, at.v});
