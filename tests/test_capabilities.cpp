@@ -32,6 +32,9 @@ const std::vector<Feature> kFeatures = {
     {"a force expression of t", &impact::Capabilities::time_expression,
      "--unset force.f --set 'force.expression=\"-9.80665 + 5 * sin(30 * t)\"'",
      "--unset force.f --set 'force.expression=\"-9.80665\"'", "force.expression"},
+    {"a force of the state", &impact::Capabilities::state_force,
+     "--unset force.f --set 'force.expression=\"-9.80665 - 100 * (u - 0.05) - v\"'",
+     "--unset force.f --set 'force.expression=\"-9.80665\"'", "force.expression"},
     {"the iterations channel", &impact::Capabilities::iterations_channel,
      "--set 'output.channels=[\"u\",\"v\",\"iterations\"]'", "", "output.channels"},
 };
@@ -62,18 +65,19 @@ TEST_CASE("capabilities: every method honours or refuses every feature, as its t
 }
 
 TEST_CASE("capabilities: the table", "[capabilities]") {
-  // Restitution, Harmonic force, Expression of t, Iterations channel, reFerence, energy Bound,
-  // exact eVents.
+  // Restitution, Harmonic force, Expression of t, force of the State, Iterations channel,
+  // reFerence, energy Bound, exact eVents.
   const std::vector<std::pair<std::string, std::string>> rows = {
-      {"direct", "RHE--B-"},         {"fb_newton", "RHEI-B-"}, {"moreau_jean", "RHE----"},
-      {"penalty", "-HEI---"},        {"exact", "RH--FBV"},     {"event_driven", "RHE-F-V"},
-      {"direct_located", "RHE----"},
+      {"direct", "RHES--B-"},         {"fb_newton", "RHE-I-B-"}, {"moreau_jean", "RHES----"},
+      {"penalty", "-HE-I---"},        {"exact", "RH---FBV"},     {"event_driven", "RHES-F-V"},
+      {"direct_located", "RHE-----"},
   };
   const auto row = [](const impact::Capabilities& c) {
     std::string r;
     r += c.restitution ? 'R' : '-';
     r += c.harmonic_force ? 'H' : '-';
     r += c.time_expression ? 'E' : '-';
+    r += c.state_force ? 'S' : '-';
     r += c.iterations_channel ? 'I' : '-';
     r += c.reference ? 'F' : '-';
     r += c.energy_bound ? 'B' : '-';
@@ -89,4 +93,7 @@ TEST_CASE("capabilities: the table", "[capabilities]") {
   impact::Model expression;
   expression.expression = "-9.80665";
   CHECK(impact::reference_for(expression).name == "event_driven");
+  impact::Model state;
+  state.expression = "-9.80665 - 100 * u - v";
+  CHECK(impact::reference_for(state).name == "event_driven");
 }

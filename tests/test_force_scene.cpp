@@ -126,7 +126,7 @@ TEST_CASE("force: an expression that is empty, too long or not evaluable at t = 
   CHECK_SCENE_ERROR(parse(kBase + "[force]\nexpression = \"2 * x\"\n"),
                     Contains("force.expression = '2 * x': the expression uses \"x\" at position 5, "
                              "which is no variable") &&
-                        Contains("the only variable is t"));
+                        Contains("the variables are t, u and v"));
   CHECK_SCENE_ERROR(parse(kBase + "[force]\nexpression = \"1 / t\"\n"),
                     Contains("force.expression = '1 / t': the expression is inf at t = 0"));
   CHECK_SCENE_ERROR(parse(kBase + "[force]\nexpression = \"sqrt(t - 1)\"\n"),

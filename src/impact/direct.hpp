@@ -79,7 +79,8 @@ struct DirectParams {
 };
 
 // What a stepper's body force needs: nothing (constant), the grid phasor (harmonic), or also an
-// expression's step integrals (time_dependent: any f(t)).
+// expression's step integrals (time_dependent: any f(t), and a force of the state f(t, u, v),
+// whose f^l is taken at the step's start state, scheme_flight.hpp).
 enum class ForceKind { constant, harmonic, time_dependent };
 
 inline ForceKind force_kind(const Model& model) {
@@ -203,6 +204,7 @@ class DirectAsPrinted {
   void initialize(const State& s, std::int64_t l) { flight_.start(l, {s.u - phi_, s.v}); }
 
   StepInfo do_step(State& s, std::int64_t l) {
+    flight_.restate({s.u - phi_, s.v});
     flight_.step(l);
     const double f = flight_.step_force();
     const State free = paper_free_step(s, f, h_);

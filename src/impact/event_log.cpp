@@ -24,7 +24,7 @@ void EventLog::operator()(std::int64_t l, const State& s, const StepInfo& info) 
         is_contact_step(force_.model(), s, info.contact_force) &&
         h_ * info.contact_force > 8 * kEps * (std::fabs(before_.v) + std::fabs(s.v));
     if (contact) {
-      contact_step(l - 1, s, force_.step_mean(static_cast<double>(l - 1) * h_, h_));
+      contact_step(l - 1, s, force_.step_mean(static_cast<double>(l - 1) * h_, h_, before_));
     } else {
       if (phase_ == Phase::stuck) sink_({static_cast<double>(l - 1) * h_, EventKind::lift, 0, 0});
       phase_ = Phase::free;

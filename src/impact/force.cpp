@@ -23,17 +23,25 @@ std::string show(double x) {
 }
 
 // muparser's '=' assigns to a variable, so "(t=0)+sin(20*t)" would set t to 0 inside the force; a
-// force only reads t. Comparisons ("==", "!=", "<=", ">=") are the other uses of '='.
+// force only reads t, u and v. Comparisons ("==", "!=", "<=", ">=") are the other uses of '='.
 void refuse_assignment(const std::string& text) {
   for (std::size_t i = 0; i < text.size(); ++i) {
     if (text[i] != '=') continue;
     const bool comparison =
         (i > 0 && std::string_view("=!<>").find(text[i - 1]) != std::string_view::npos) ||
         (i + 1 < text.size() && text[i + 1] == '=');
-    if (!comparison)
-      throw std::invalid_argument("the expression assigns to t with '=' at position " +
-                                  std::to_string(i + 1) +
-                                  "; a force only reads t (to compare, write '==')");
+    if (comparison) continue;
+    // The name assigned to: the word before the '='.
+    std::size_t end = i;
+    while (end > 0 && text[end - 1] == ' ') --end;
+    std::size_t start = end;
+    while (start > 0 &&
+           (std::isalnum(static_cast<unsigned char>(text[start - 1])) || text[start - 1] == '_'))
+      --start;
+    const std::string name = start < end ? text.substr(start, end - start) : "a value";
+    throw std::invalid_argument("the expression assigns to " + name + " with '=' at position " +
+                                std::to_string(i + 1) +
+                                "; a force only reads t, u and v (to compare, write '==')");
   }
 }
 
@@ -55,9 +63,23 @@ std::string number_at(const std::string& text, std::size_t position) {
   return text.substr(position, end - position);
 }
 
+// The variables of an expression, bound by address: the time and the state.
+void define_variables(mu::Parser& parser, double& t, double& u, double& v) {
+  parser.DefineVar("t", &t);
+  parser.DefineVar("u", &u);
+  parser.DefineVar("v", &v);
+  parser.DefineConst("pi", std::numbers::pi);
+}
+
+// After the first Eval, which parses the expression and records the variables it uses.
+bool reads_state(const mu::Parser& parser) {
+  const auto& used = parser.GetUsedVar();
+  return used.count("u") > 0 || used.count("v") > 0;
+}
+
 }  // namespace
 
-// The parser binds t by address, so each ForceFunction owns its parser and its t.
+// The parser binds t, u and v by address, so each ForceFunction owns its parser and its variables.
 struct ForceFunction::Expression {
   explicit Expression(const std::string& expression) : text(expression) {
     if (text.size() > kMaxExpressionLength)
@@ -65,21 +87,21 @@ struct ForceFunction::Expression {
                                   " characters; at most " + std::to_string(kMaxExpressionLength) +
                                   " are allowed");
     if (text.find_first_not_of(" \t") == std::string::npos)
-      throw std::invalid_argument("the expression is empty; give a function of t");
+      throw std::invalid_argument("the expression is empty; give a function of t (and u, v)");
     refuse_assignment(text);
     try {
-      parser.DefineVar("t", &t);
-      parser.DefineConst("pi", std::numbers::pi);
+      define_variables(parser, t, u, v);
       parser.SetExpr(text);
-      t = 0.0;
+      t = u = v = 0.0;
       const double f0 = parser.Eval();
+      state = reads_state(parser);  // muparser records the variables as the first Eval parses
       if (const int values = parser.GetNumResults(); values > 1)
         throw std::invalid_argument("the expression has " + std::to_string(values) +
                                     " values separated by commas, of which muparser would keep "
                                     "the last; give one (a comma only separates arguments)");
       if (!std::isfinite(f0))
-        throw std::invalid_argument("the expression is " + show(f0) +
-                                    " at t = 0; it must be finite");
+        throw std::invalid_argument("the expression is " + show(f0) + " at t = 0" +
+                                    (state ? ", u = 0, v = 0" : "") + "; it must be finite");
     } catch (const mu::Parser::exception_type& e) {
       // Positions are counted from 1 here; muparser's own message counts from 0, so it is left
       // out where the position is all it adds.
@@ -90,14 +112,24 @@ struct ForceFunction::Expression {
                                     "and exponent, as 9.8, .5 or 2.5e-3)");
       if (e.GetCode() == mu::ecUNASSIGNABLE_TOKEN)
         throw std::invalid_argument("the expression uses \"" + e.GetToken() + "\"" + at +
-                                    ", which is no variable or function muparser knows (the only "
-                                    "variable is t; pi is defined)");
+                                    ", which is no variable or function muparser knows (the "
+                                    "variables are t, u and v; pi is defined)");
       throw std::invalid_argument("the expression does not parse" + at + ": " + e.GetMsg() +
-                                  " (the variable is t; pi is defined)");
+                                  " (the variables are t, u and v; pi is defined)");
     }
   }
   double operator()(double at) const {
     t = at;
+    return evaluate();
+  }
+  double operator()(double at, const State& s) const {
+    t = at;
+    u = s.u;
+    v = s.v;
+    return evaluate();
+  }
+  double evaluate() const {
+    const double at = t;
     double value;
     try {
       value = parser.Eval();
@@ -111,16 +143,20 @@ struct ForceFunction::Expression {
   }
 
   std::string text;
-  mutable double t = 0.0;
+  mutable double t = 0.0, u = 0.0, v = 0.0;
+  bool state = false;  // the expression reads u or v
   mu::Parser parser;
 };
 
 ForceFunction::ForceFunction(const Model& model) : model_(model), harmonic_(model.harmonic) {
-  if (!model.expression.empty()) expression_ = std::make_unique<Expression>(model.expression);
+  if (!model.expression.empty()) {
+    expression_ = std::make_unique<Expression>(model.expression);
+    state_dependent_ = expression_->state;
+  }
 }
 
 ForceFunction::ForceFunction(const ForceFunction& other)
-    : model_(other.model_), harmonic_(other.harmonic_) {
+    : model_(other.model_), harmonic_(other.harmonic_), state_dependent_(other.state_dependent_) {
   if (other.expression_) expression_ = std::make_unique<Expression>(other.expression_->text);
 }
 
@@ -134,13 +170,25 @@ ForceFunction& ForceFunction::operator=(ForceFunction&&) noexcept = default;
 ForceFunction::~ForceFunction() = default;
 
 double ForceFunction::at(double t) const {
+  if (state_dependent_)
+    throw std::logic_error("ForceFunction::at(t): the force reads u or v; give the state");
   double value = model_.f;
   if (harmonic_) value += harmonic_->amplitude * std::sin(harmonic_->omega * t + harmonic_->phase);
   if (expression_) value += (*expression_)(t);
   return value;
 }
 
+double ForceFunction::at(double t, const State& s) const {
+  if (!state_dependent_) return at(t);
+  // An expression of the state is the whole force (the reader refuses f and a harmonic part
+  // beside an expression), so f and the harmonic part are zero here.
+  return model_.f + (*expression_)(t, s);
+}
+
 double ForceFunction::integral(double t0, double t1) const {
+  if (state_dependent_)
+    throw std::logic_error(
+        "ForceFunction::integral(t0, t1): the force reads u or v; give the state");
   double value = model_.f * (t1 - t0);
   // cos(a) - cos(b) = 2 sin((a + b)/2) sin((b - a)/2), without cancellation for short steps.
   if (harmonic_) value += harmonic_integral(*harmonic_, t0, t1);
@@ -153,9 +201,28 @@ double ForceFunction::integral(double t0, double t1) const {
   return value;
 }
 
+double ForceFunction::integral(double t0, double t1, const State& s) const {
+  if (!state_dependent_) return integral(t0, t1);
+  struct Frozen {
+    const Expression* expression;
+    State s;
+  } frozen{expression_.get(), s};
+  const Integrand f{[](double t, void* self) {
+                      const auto* at = static_cast<const Frozen*>(self);
+                      return (*at->expression)(t, at->s);
+                    },
+                    &frozen};
+  return model_.f * (t1 - t0) + controlled_integral(f, t0, t1);
+}
+
 double ForceFunction::step_mean(double t0, double h) const {
   if (constant()) return model_.f;
   return integral(t0, t0 + h) / h;
+}
+
+double ForceFunction::step_mean(double t0, double h, const State& s) const {
+  if (!state_dependent_) return step_mean(t0, h);
+  return integral(t0, t0 + h, s) / h;
 }
 
 State ForceFunction::flight(const State& s, double t0, double t1) const {
@@ -183,6 +250,20 @@ State ForceFunction::flight(const State& s, double t0, double t1) const {
     next.u += k * (std::cos(a0) * dt - 2 * std::cos(mid) * std::sin(half) / w.omega);
   }
   return next;
+}
+
+bool state_force(const Model& model) {
+  if (model.expression.empty()) return false;
+  try {
+    mu::Parser parser;
+    double t = 0, u = 0, v = 0;
+    define_variables(parser, t, u, v);
+    parser.SetExpr(model.expression);
+    parser.Eval();
+    return reads_state(parser);
+  } catch (const mu::Parser::exception_type&) {
+    return false;
+  }
 }
 
 std::optional<double> ForceFunction::bound() const {

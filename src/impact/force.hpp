@@ -2,6 +2,13 @@
 // (the discrete force of the schemes, see below) and, for a constant or harmonic force, the free
 // flight in closed form. One ForceFunction per solver: an expression force owns a muparser
 // parser, which is not safe to share between threads.
+//
+// A force of the state. An expression may read the position u and the velocity v besides t (the
+// impact oscillator f = -k (u - u_eq) - c v + A sin(omega t)); (2-1) becomes u'' = N + f(t, u, v).
+// Such a force is evaluated at a state: at(t, s), and its integral over a step with the state
+// frozen at the step's start, integral(t0, t1, s), the explicit reading of the discrete force of
+// the schemes (scheme_flight.hpp). The forms without a state refuse it (std::logic_error), so that
+// no solver reads a force of the state as one of t alone.
 #pragma once
 
 #include <memory>
@@ -18,7 +25,8 @@ inline constexpr std::size_t kMaxExpressionLength = 4096;
 class ForceFunction {
  public:
   // Throws std::invalid_argument for an expression that is empty, too long, does not parse (the
-  // message gives the position), uses a variable other than t, or is not finite at t = 0.
+  // message gives the position), uses a variable other than t, u and v, or is not finite at
+  // t = 0, u = v = 0.
   explicit ForceFunction(const Model& model);
   ForceFunction(const ForceFunction& other);
   ForceFunction& operator=(const ForceFunction& other);
@@ -28,18 +36,28 @@ class ForceFunction {
 
   bool constant() const { return !harmonic_ && !expression_; }
   bool has_expression() const { return expression_ != nullptr; }
+  // Whether the expression reads u or v: a force of the state.
+  bool state_dependent() const { return state_dependent_; }
 
-  // f(t). Throws std::runtime_error naming t where an expression is not finite.
+  // f(t). Throws std::runtime_error naming t where an expression is not finite, std::logic_error
+  // for a force of the state.
   double at(double t) const;
+  // f(t, s.u, s.v), for any force (one of t alone ignores s).
+  double at(double t, const State& s) const;
   // The integral of f over [t0, t1]: in closed form, or for an expression by 16-point
   // Gauss-Legendre (GSL), exact for polynomials of degree 31 over the interval, with its error
   // under control (step_quadrature.hpp: checked where the samples do not show a resolved f, then
   // adaptive); std::runtime_error for an interval it cannot resolve (a pole, a force too fast).
+  // std::logic_error for a force of the state.
   double integral(double t0, double t1) const;
+  // The integral of f(t, s.u, s.v) over [t0, t1] with the state frozen at s, as above.
+  double integral(double t0, double t1, const State& s) const;
   // The discrete force of step l of the schemes (4-1)-(4-3): the step's mean (1/h) of the integral
   // of f over [t_l, t_{l+1}], which keeps the impulse identity h sum N^l = v^n - v^0 - integral of
   // f exact (4-9). For a constant force it is f.
   double step_mean(double t0, double h) const;
+  // The same with the state frozen at s, the step's start (integral(t0, t0 + h, s) / h).
+  double step_mean(double t0, double h, const State& s) const;
   // The exact free flight from (t0, s) to t1 (u'' = f(t), no contact): closed form for a constant
   // or harmonic force; std::logic_error for an expression (its flights are integrated by ODE).
   State flight(const State& s, double t0, double t1) const;
@@ -54,6 +72,11 @@ class ForceFunction {
   Model model_;
   std::optional<Harmonic> harmonic_;
   std::unique_ptr<Expression> expression_;
+  bool state_dependent_ = false;
 };
+
+// Whether a model's expression reads u or v (false for none, or for one that does not parse: the
+// scene reader refuses that with its own message).
+bool state_force(const Model& model);
 
 }  // namespace impact

@@ -1,6 +1,7 @@
 // The model of the paper, Section 2: u'' = N + f(t) (2-1), 0 <= u - phi ⟂ N >= 0 (2-2),
 // with an optional coefficient of restitution (Section 5.2). The body force f(t) is a constant,
-// a constant plus a harmonic term, or a muparser expression of t (force.hpp evaluates it).
+// a constant plus a harmonic term, or a muparser expression of t, or of t and the state u, v
+// (force.hpp evaluates it).
 #pragma once
 
 #include <cmath>
@@ -39,7 +40,7 @@ struct Model {
   double f = 0.0;                      // the constant part of the body force (2-1)
   std::optional<double> cor{};         // COR = -v_after / v_before, in [0, 1]
   std::optional<Harmonic> harmonic{};  // the harmonic part of the body force, if any
-  std::string expression{};            // a muparser expression of t added to it; empty: none
+  std::string expression{};            // muparser, of t (and u, v) added to it; empty: none
 };
 
 // f(t) = f: the case of the paper's Section 5 and of every closed form in this package.

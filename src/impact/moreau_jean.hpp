@@ -59,7 +59,9 @@ struct MoreauJeanParams {
 // free-flight velocity is exact at the grid times, and with theta = 1/2 the position is its
 // trapezoidal rule, second order (Siconos's MoreauJeanOSI weights f(t_l), f(t_{l+1}) by theta
 // instead, which is second order too but keeps neither). `MoreauJean` is the constant force,
-// `MoreauJeanTimeDependent` f(t): two types, as for direct (direct.hpp says why).
+// `MoreauJeanTimeDependent` f(t): two types, as for direct (direct.hpp says why). A force of the
+// state f(t, u, v) is taken at the step's start, h f^l = int_{t_l}^{t_{l+1}} f(t, u^l, v^l) dt
+// (scheme_flight.hpp): explicit in the state, so first order in h whatever theta.
 template <bool TimeDependent>
 class BasicMoreauJean {
  public:
@@ -85,7 +87,7 @@ class BasicMoreauJean {
   StepInfo do_step(State& s, std::int64_t l) {
     StepInfo info;
     if constexpr (TimeDependent) {
-      const SchemeForce::Impulse impulse = force_.advance(l);
+      const SchemeForce::Impulse impulse = force_.advance(l, state_);
       const double v_free = state_.v + h_ * f_ + (impulse.harmonic + impulse.expression);
       moreau_jean_update(state_.u, state_.v, info.contact_force, v_free, e_, theta_, h_);
     } else {

@@ -33,7 +33,7 @@ constexpr int kLiftRescan = 8;  // samples before a lift-off's root, looking for
 
 // The GSL objects; on the heap, since the system's params point here.
 struct OdeLaw::Gsl {
-  Gsl(const ForceFunction* f, const OdeSettings& s) : force(f) {
+  Gsl(const ForceFunction* f, double floor, const OdeSettings& s) : force(f), phi(floor) {
     sys = gsl_odeiv2_system{&Gsl::rhs, nullptr, 2, this};
     step = gsl_odeiv2_step_alloc(gsl_odeiv2_step_rk8pd, 2);
     dense = gsl_odeiv2_step_alloc(gsl_odeiv2_step_rk8pd, 2);
@@ -48,13 +48,13 @@ struct OdeLaw::Gsl {
     gsl_odeiv2_step_free(dense);
     gsl_odeiv2_step_free(step);
   }
-  // y = (u - phi, v): y' = (v, f(t)). A force that fails (an expression that is not finite) is kept
-  // and rethrown after GSL returns, rather than thrown through GSL's C frames.
+  // y = (u - phi, v): y' = (v, f(t, u, v)). A force that fails (an expression that is not finite)
+  // is kept and rethrown after GSL returns, rather than thrown through GSL's C frames.
   static int rhs(double t, const double y[], double dydt[], void* self) {
     auto* g = static_cast<Gsl*>(self);
     dydt[0] = y[1];
     try {
-      dydt[1] = g->force->at(t);
+      dydt[1] = g->force->at(t, {g->phi + y[0], y[1]});
     } catch (...) {
       g->error = std::current_exception();
       return GSL_EBADFUNC;
@@ -66,6 +66,7 @@ struct OdeLaw::Gsl {
   }
 
   const ForceFunction* force;
+  double phi;
   gsl_odeiv2_system sys{};
   gsl_odeiv2_step* step;
   gsl_odeiv2_step* dense;
@@ -77,13 +78,17 @@ struct OdeLaw::Gsl {
 
 OdeLaw::OdeLaw(const Model& model, const OdeSettings& settings)
     : force_(std::make_unique<ForceFunction>(model)),
+      phi_(model.phi),
+      rest_{model.phi, 0.0},
       settings_(settings),
-      gsl_(std::make_unique<Gsl>(force_.get(), settings)) {}
+      gsl_(std::make_unique<Gsl>(force_.get(), phi_, settings)) {}
 
 OdeLaw::OdeLaw(const OdeLaw& other)
     : force_(std::make_unique<ForceFunction>(*other.force_)),
+      phi_(other.phi_),
+      rest_(other.rest_),
       settings_(other.settings_),
-      gsl_(std::make_unique<Gsl>(force_.get(), settings_)),
+      gsl_(std::make_unique<Gsl>(force_.get(), phi_, settings_)),
       t_a_(other.t_a_),
       t_b_(other.t_b_),
       y_a_(other.y_a_),
@@ -123,7 +128,7 @@ State OdeLaw::at(double t) const {
   if (!(t > t_a_)) return y_a_;
   if (t == t_b_) return y_b_;
   GslErrorsAsStatus quiet;
-  double y[2] = {y_a_.u, y_a_.v}, error[2], rate_in[2] = {y_a_.v, force(t_a_)};
+  double y[2] = {y_a_.u, y_a_.v}, error[2], rate_in[2] = {y_a_.v, force_on(t_a_, y_a_)};
   gsl_odeiv2_step_reset(gsl_->dense);
   const int status =
       gsl_odeiv2_step_apply(gsl_->dense, t_a_, t - t_a_, y, error, rate_in, nullptr, &gsl_->sys);
@@ -152,8 +157,13 @@ void OdeLaw::take_step() {
   // The step's force bound (ode_flight.hpp).
   std::array<double, kSamples> f{};
   double largest = 0, change = 0;
+  const bool state = force_->state_dependent();
   for (int i = 0; i < kSamples; ++i) {
-    f[i] = force(t_a_ + (t_b_ - t_a_) * i / (kSamples - 1));
+    const double t_i = t_a_ + (t_b_ - t_a_) * i / (kSamples - 1);
+    if (!state)
+      f[i] = force(t_i);
+    else  // along the path (ode_flight.hpp)
+      f[i] = force_on(t_i, i == 0 ? y_a_ : i == kSamples - 1 ? y_b_ : at(t_i));
     largest = std::fmax(largest, std::fabs(f[i]));
     if (i > 0) change = std::fmax(change, std::fabs(f[i] - f[i - 1]));
   }
@@ -288,7 +298,7 @@ double OdeLaw::rest_impulse(double a, double b) const {
   double value = 0;
   // Gauss-Legendre 16 per piece of at most max_step, as accurate as the ODE steps.
   for (double x = a; x < b; x += settings_.max_step)
-    value -= force_->integral(x, std::fmin(b, x + settings_.max_step));
+    value -= force_->integral(x, std::fmin(b, x + settings_.max_step), rest_);
   return value;
 }
 
@@ -301,11 +311,23 @@ std::optional<double> OdeLaw::chatter_window(double t, double V, double e) const
   // step), so that a force varying faster than the samples does not pass for a steady one.
   double g_min = g, g_max = g, previous = g, change = 0;
   for (int i = 1; i < kChatterSamples; ++i) {
-    const double gi = -force(t + W0 * i / (kChatterSamples - 1));
+    const double ti = t + W0 * i / (kChatterSamples - 1), gi = -force(ti);
     g_min = std::fmin(g_min, gi);
     g_max = std::fmax(g_max, gi);
     change = std::fmax(change, std::fabs(gi - previous));
     previous = gi;
+  }
+  // A force of the state: the corners of the bounces' box at each time (ode_flight.hpp).
+  if (force_->state_dependent()) {
+    const double height = V * V / g;
+    for (int i = 0; i < kChatterSamples; ++i) {
+      const double ti = t + W0 * i / (kChatterSamples - 1);
+      for (const State corner : {State{0, -V}, State{0, V}, State{height, -V}, State{height, V}}) {
+        const double gi = -force_on(ti, corner);
+        g_min = std::fmin(g_min, gi);
+        g_max = std::fmax(g_max, gi);
+      }
+    }
   }
   return chatter_window_within(e, V, W0, g_min - change, g_max + change);
 }

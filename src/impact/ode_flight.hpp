@@ -31,6 +31,17 @@
 // window, widened by the largest change between neighbouring samples (estimated, not certified,
 // with no bound on f').
 //
+// A force of the state, f(t, u, v) (force.hpp): the flight is y' = (v, f(t, phi + y_0, y_1)), and
+// the step's force bound samples f along the step's path (the dense output at the 7 inner
+// samples): it bounds |g''| where the path goes, as above. On the floor the state is (phi, 0), so
+// force(t), which the rest, the lift-off scan and the impulse of a rest read, is f(t, phi, 0): a
+// resting particle lifts where that crosses 0 upward. An impact's `late` correction (Contact) and
+// a zero-speed departure's first stretch also take f at (phi, 0), for the velocity of the contact
+// (a change of O(late) in it, late below the root's bracket) and over the stretch's first sample
+// (where the state is (phi, 0) to O(stretch^2)). A chatter window samples f at the corners of the
+// box the bounces stay in, u in [phi, phi + V^2 / g], v in [-V, V], at each time: for a force
+// affine in u and v these are its extremes over the box.
+//
 // The end of the run. f is evaluated on [t0, end] only (OdeSettings::end; a force such as
 // sqrt(2 - t) is defined up to T = 2 and no further): the ODE steps, the lift-off scan and the
 // force's rate stop there, and a chatter window that reaches past it is not certified.
@@ -77,7 +88,10 @@ class OdeLaw {
   // The ODE steps the run may take in all (event_driven sets it before each grid step).
   void set_ode_step_limit(long limit) { ode_step_limit_ = limit; }
 
-  double force(double t) const { return force_->at(t); }
+  // f on the floor at rest, f(t, phi, 0): f(t) for a force of t alone.
+  double force(double t) const { return force_->at(t, rest_); }
+  // f at the gap and velocity y = (u - phi, v).
+  double force_on(double t, const State& y) const { return force_->at(t, {phi_ + y.u, y.v}); }
   double rate(double t) const;
   Lift lift_after(double t) const;
   double rest_impulse(double a, double b) const;
@@ -96,6 +110,8 @@ class OdeLaw {
   double first_upward(double a, double fa, double b, int depth) const;
 
   std::unique_ptr<ForceFunction> force_;  // on the heap: the GSL system points to it
+  double phi_;
+  State rest_;  // (phi, 0): the state of a particle at rest on the floor
   OdeSettings settings_;
   std::unique_ptr<Gsl> gsl_;
   double t_a_ = 0, t_b_ = 0;

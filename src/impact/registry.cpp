@@ -3,6 +3,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "impact/force.hpp"
 #include "impact/format.hpp"
 
 namespace impact {
@@ -16,6 +17,7 @@ const MethodInfo kMethods[] = {
      .can = {.restitution = true,
              .harmonic_force = true,
              .time_expression = true,
+             .state_force = true,
              .energy_bound = true}},
     {.name = "fb_newton",
      .summary = "(4-1)-(4-3) as the smoothed Fischer-Burmeister equation (5-3), Newton",
@@ -28,7 +30,10 @@ const MethodInfo kMethods[] = {
     {.name = "moreau_jean",
      .summary = "Moreau-Jean theta time-stepping with Newton's impact law",
      .defaults = MoreauJeanParams{},
-     .can = {.restitution = true, .harmonic_force = true, .time_expression = true}},
+     .can = {.restitution = true,
+             .harmonic_force = true,
+             .time_expression = true,
+             .state_force = true}},
     // Compliance has no impact law to apply a COR to: it refuses one rather than run elastic.
     {.name = "penalty",
      .summary = "normal compliance N = c_N max(phi - u, 0), GSL odeiv2",
@@ -48,6 +53,7 @@ const MethodInfo kMethods[] = {
      .can = {.restitution = true,
              .harmonic_force = true,
              .time_expression = true,
+             .state_force = true,
              .reference = true,
              .exact_events = true}},
     {.name = "direct_located",
@@ -84,7 +90,8 @@ std::vector<std::string_view> methods_with(bool Capabilities::*capability) {
 bool honours(const MethodInfo& method, const Model& model) {
   const bool harmonic = model.harmonic && model.harmonic->amplitude != 0.0;
   return (!model.cor || method.can.restitution) && (!harmonic || method.can.harmonic_force) &&
-         (model.expression.empty() || method.can.time_expression);
+         (model.expression.empty() || method.can.time_expression) &&
+         (method.can.state_force || !state_force(model));
 }
 
 const MethodInfo& reference_for(const Model& model) {
@@ -98,6 +105,9 @@ AnyStepper make_stepper(const Model& model, double h, const MethodParams& params
   if (model.cor && !method.can.restitution)
     throw std::invalid_argument("method '" + std::string(method.name) +
                                 "' has no restitution law: it cannot take a COR");
+  if (!method.can.state_force && state_force(model))
+    throw std::invalid_argument("method '" + std::string(method.name) +
+                                "' takes a force of t only: force.expression reads u or v");
   if ((std::holds_alternative<DirectParams>(params) ||
        std::holds_alternative<FbNewtonParams>(params)) &&
       !scheme_step_representable(h))

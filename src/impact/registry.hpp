@@ -42,6 +42,7 @@ struct Capabilities {
   bool restitution = false;         // floor.cor: an impact law a COR acts on
   bool harmonic_force = false;      // force.amplitude/omega/phase
   bool time_expression = false;     // force.expression (a function of t)
+  bool state_force = false;         // force.expression reads u or v: f(t, u, v)
   bool iterations_channel = false;  // output.channels "iterations": Newton iterations, ODE steps
   bool reference = false;     // samples an exact solution (--against's reference, tight tolerances)
   bool energy_bound = false;  // the discrete energy (3-1) never rises (Lemma 1, (4-5), stability)
@@ -58,10 +59,11 @@ struct MethodInfo {
 std::span<const MethodInfo> methods();
 // The names of the methods that have a capability, for messages ("direct, fb_newton or exact").
 std::vector<std::string_view> methods_with(bool Capabilities::*capability);
-// Whether `method` honours what `model` states (a COR, a harmonic part, an expression).
+// Whether `method` honours what `model` states (a COR, a harmonic part, an expression, one that
+// reads the state).
 bool honours(const MethodInfo& method, const Model& model);
 // The reference for a model: the first method with `reference` that honours it (exact for a
-// constant or harmonic force, event_driven for an expression).
+// constant or harmonic force, event_driven for an expression, of t or of the state).
 const MethodInfo& reference_for(const Model& model);
 // nullptr for an unknown name.
 const MethodInfo* find_method(std::string_view name);

@@ -20,7 +20,7 @@ double GridPhasor::angle(int k, int d) const {
 }
 
 SchemeForce::SchemeForce(const Model& model, double h)
-    : h_(h), has_phasor_(model.harmonic.has_value()) {
+    : phi_(model.phi), h_(h), has_phasor_(model.harmonic.has_value()) {
   if (has_phasor_) {
     const Harmonic& w = *model.harmonic;
     phasor_ = GridPhasor(w, h);
@@ -41,7 +41,8 @@ SchemeForce::SchemeForce(const Model& model, double h)
 }
 
 SchemeForce::SchemeForce(const SchemeForce& other)
-    : h_(other.h_),
+    : phi_(other.phi_),
+      h_(other.h_),
       has_phasor_(other.has_phasor_),
       phasor_(other.phasor_),
       amplitude_over_omega_(other.amplitude_over_omega_) {
@@ -53,8 +54,11 @@ SchemeForce& SchemeForce::operator=(const SchemeForce& other) {
   return *this;
 }
 
-double SchemeForce::expression_integral(const ForceFunction& expression, std::int64_t l, double h) {
-  return expression.integral(static_cast<double>(l) * h, static_cast<double>(l + 1) * h);
+double SchemeForce::expression_integral(const ForceFunction& expression, std::int64_t l, double h,
+                                        double phi, State at) {
+  const double t0 = static_cast<double>(l) * h, t1 = static_cast<double>(l + 1) * h;
+  if (!expression.state_dependent()) return expression.integral(t0, t1);
+  return expression.integral(t0, t1, {phi + at.u, at.v});
 }
 
 SchemeFlight::SchemeFlight(const Model& model, double h) : f_(model.f), h_(h), force_(model, h) {

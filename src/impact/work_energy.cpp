@@ -6,13 +6,13 @@ WorkEnergy::WorkEnergy(const Model& model, const State& initial, double h)
     : force_(model),
       h_(h),
       constant_(force_.constant()),
-      start_(force_.at(0.0) * initial.u),
-      u_(initial.u) {}
+      start_(force_.at(0.0, initial) * initial.u),
+      last_(initial) {}
 
 void WorkEnergy::step(std::int64_t l, const State& s) {
   if (constant_) return;
-  work_ += (s.u - u_) * force_.step_mean(static_cast<double>(l - 1) * h_, h_);
-  u_ = s.u;
+  work_ += (s.u - last_.u) * force_.step_mean(static_cast<double>(l - 1) * h_, h_, last_);
+  last_ = s;
 }
 
 double WorkEnergy::energy(const State& s) const {
@@ -22,7 +22,7 @@ double WorkEnergy::energy(const State& s) const {
 
 double initial_energy(const Model& model, const State& initial) {
   if (constant_force(model)) return energy(model, initial);
-  return 0.5 * initial.v * initial.v - ForceFunction(model).at(0.0) * initial.u;
+  return 0.5 * initial.v * initial.v - ForceFunction(model).at(0.0, initial) * initial.u;
 }
 
 }  // namespace impact

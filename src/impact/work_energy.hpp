@@ -20,7 +20,10 @@ namespace impact {
 // along the straight line between the samples. Its error on a step is int (f - mean f)(u' - mean
 // u'), at most h^3 sup|f'| sup|u''| on a step of free flight and h^2 sup|f'| |jump of v| on a step
 // with an impact: second order in h over a run with finitely many impacts, and exact for a
-// constant force.
+// constant force. A force of the state f(t, u, v) (force.hpp) is taken at the step's start state,
+// (1/h) int f(t, u^l, v^l) dt over the step, the discrete force of the schemes (scheme_flight.hpp):
+// the work int f v dt along the path to first order in h only, since f changes with the state
+// over the step by O(h); E then drifts by O(h) over a run, for every method.
 class WorkEnergy {
  public:
   WorkEnergy(const Model& model, const State& initial, double h);
@@ -38,10 +41,11 @@ class WorkEnergy {
   bool constant_;
   double start_;  // f(0) u(0)
   double work_ = 0.0;
-  double u_ = 0.0;  // u at the last step
+  State last_;  // the state at the last step
 };
 
-// E at t = 0, v0^2/2 - f(0) u0: what the scene reader checks to be finite.
+// E at t = 0, v0^2/2 - f(0) u0 (f(0) at the initial state): what the scene reader checks to be
+// finite.
 double initial_energy(const Model& model, const State& initial);
 
 }  // namespace impact

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "impact/force.hpp"
+#include "impact/registry.hpp"
 #include "scene/toml_text.hpp"
 
 namespace impact {
@@ -55,8 +56,11 @@ const KeySpec kForceKeys[] = {
      .type = KeyType::text,
      .also =
          "at most 4096 characters, not with f, amplitude, omega or phase, not with method exact",
-     .meaning = "the whole body force f(t) as a muparser function of t, e.g. \"-9.80665 + 14.71 * "
-                "sin(62.83 * t)\" (pi is defined)",
+     .only_some = "u and v",
+     .only_with = &Capabilities::state_force,
+     .meaning = "the whole body force as a muparser function of t, e.g. \"-9.80665 + 14.71 * "
+                "sin(62.83 * t)\" (pi is defined), or of t, the position u and the velocity v, "
+                "f(t, u, v), e.g. \"-400 * (u - 0.05) - 2 * v + 10 * sin(20 * t)\"",
      .get = [](const Scene& s) -> KeyValue {
        return s.model.expression.empty() ? KeyValue() : KeyValue(s.model.expression);
      },
@@ -106,16 +110,32 @@ void check_force(const KeyReader& r, const toml::table& root, const Scene& scene
   if (scene.model.expression.empty())  // ForceFunction reads an empty expression as none
     r.fail_value("force", "expression", *expression,
                  "the expression is empty; give a function of t, or leave the key out");
+  bool reads_state = false;
   try {
-    const ForceFunction evaluated(scene.model);
+    reads_state = ForceFunction(scene.model).state_dependent();
   } catch (const std::invalid_argument& e) {
     r.fail_value("force", "expression", *expression, e.what());
   }
-  if (std::holds_alternative<ExactParams>(scene.method))
-    r.fail_value("method", "name", *root.get("method")->as_table()->get("name"),
-                 "'exact' has closed-form flights for a constant or harmonic force only, and "
-                 "force.expression is set: use method.name = \"event_driven\", the event-driven "
-                 "reference for any f(t)");
+  // What the method cannot honour, from the capability table (registry.hpp).
+  const MethodInfo& method = method_info(scene.method);
+  const std::string name(method.name);
+  const toml::node& method_node = *root.get("method")->as_table()->get("name");
+  const std::string closed_form = "' has closed-form flights for a constant or harmonic force only";
+  if (reads_state && !method.can.state_force)
+    r.fail_value(
+        "method", "name", method_node,
+        "'" + name +
+            (method.can.time_expression ? "' takes a force expression of t alone" : closed_form) +
+            ", and force.expression reads u or v, a force of the state f(t, u, v)" +
+            (method.can.time_expression ? "" : " (which has no closed-form flight)") +
+            ": use method.name = \"event_driven\", the event-driven reference for "
+            "f(t, u, v) (" +
+            join(methods_with(&Capabilities::state_force)) + " take one)");
+  if (!method.can.time_expression)
+    r.fail_value("method", "name", method_node,
+                 "'" + name + closed_form +
+                     ", and force.expression is set: use method.name = \"event_driven\", the "
+                     "event-driven reference for any f(t)");
 }
 
 }  // namespace impact

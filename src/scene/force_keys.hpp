@@ -1,8 +1,8 @@
 // The [force] table of a scene: the body force f(t) of (2-1) as a constant f, plus either a
-// harmonic term amplitude sin(omega t + phase) or a muparser expression of t (impact/force.hpp
-// evaluates it). Its keys (force_keys(), declared in scene_keys.hpp) join the key table, so that
-// the reader checks them and `impact run --help` prints them; the checks that involve several keys,
-// or the method, are here.
+// harmonic term amplitude sin(omega t + phase) or a muparser expression of t, or of t and the state
+// u, v (impact/force.hpp evaluates it). Its keys (force_keys(), declared in scene_keys.hpp) join
+// the key table, so that the reader checks them and `impact run --help` prints them; the checks
+// that involve several keys, or the method, are here.
 #pragma once
 
 #include <toml++/toml.h>
@@ -14,8 +14,10 @@ namespace impact {
 
 // What no single [force] key can check, after every table is read: an empty [force], a harmonic
 // part without its amplitude or omega, an expression together with the harmonic keys, an
-// expression that muparser cannot evaluate at t = 0 (the message gives the position), and the
-// method `exact` with an expression force (its closed-form flights need a harmonic f). Throws
+// expression that muparser cannot evaluate at t = 0 (the message gives the position), and a
+// method that does not honour the expression as its capabilities say (registry.hpp): `exact` with
+// any expression (its closed-form flights need a harmonic f), the methods without state_force with
+// one that reads u or v. Throws
 // SceneError naming where the key came from, the key, its value and what is allowed.
 void check_force(const KeyReader& r, const toml::table& root, const Scene& scene);
 

@@ -46,6 +46,12 @@ std::string allowed(const KeySpec& spec) {
     }
   }
   if (!spec.also.empty()) out.append(", ").append(spec.also);
+  if (spec.only_with)
+    out.append(", ")
+        .append(spec.only_some)
+        .append(" with ")
+        .append(join(methods_with(spec.only_with)))
+        .append(" only");
   return out;
 }
 

@@ -16,6 +16,8 @@
 
 namespace impact {
 
+struct Capabilities;  // impact/registry.hpp
+
 enum class KeyType { number, integer, name, names, text };
 
 // The values a number or integer key accepts; the whole real line means any finite number.
@@ -46,6 +48,10 @@ struct KeySpec {
   std::span<const std::string_view> (*choices)() = nullptr;  // name, names
   bool required = false;
   std::string_view also = {};  // what the reader checks beyond the range, for --help
+  // A use of the key that only some methods honour, for --help: what it is, and the capability
+  // (registry.hpp) whose methods --help lists.
+  std::string_view only_some = {};
+  bool Capabilities::*only_with = nullptr;
   std::string_view meaning = {};
   KeyValue (*get)(const Scene&) = nullptr;  // its default (nullptr: required, or none)
   void (*set)(Scene&, const KeyValue&) = nullptr;

@@ -26,8 +26,8 @@ std::optional<SceneIssue> cross_check(const Scene& scene, const ShowKey& show) {
     return SceneIssue{"output", "channels",
                       "E: the initial energy v0^2/2 - f(0) u0 (3-1) is beyond the double range "
                       "(v0 = " +
-                          shortest(scene.initial.v) +
-                          ", f(0) = " + shortest(ForceFunction(scene.model).at(0.0)) +
+                          shortest(scene.initial.v) + ", f(0) = " +
+                          shortest(ForceFunction(scene.model).at(0.0, scene.initial)) +
                           ", u0 = " + shortest(scene.initial.u) + ")",
                       false};
   return std::nullopt;
