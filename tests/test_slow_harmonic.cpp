@@ -123,3 +123,29 @@ TEST_CASE("The slow forms' terms are sin x / x and its kin to rounding", "[forci
   const impact::Harmonic w{14.71, 1e-310, 0.5};
   CHECK(impact::harmonic_integral(w, 0.0, 2.0) == Approx(14.71 * 2 * std::sin(0.5)));
 }
+
+TEST_CASE("A copied stepper with a slow harmonic force steps as the original, bit for bit",
+          "[forcing][regression]") {
+  // The copy of a stepper's force used to drop the slow forms (a copy went back to a/omega and
+  // a/omega^2): a caller that copies a stepper got another trajectory.
+  const impact::Grid grid{1e-4, 20000};
+  const auto run = [&](auto stepper) {
+    std::vector<State> out;
+    impact::simulate(
+        stepper, State{0.01, 0.0}, grid,
+        [&](std::int64_t, const State& s, const impact::StepInfo&) { out.push_back(s); });
+    return out;
+  };
+  for (const double omega : {1e-20, 1e-8}) {
+    INFO("omega = " << omega);
+    const Model m = table(omega, 0.3);
+    const impact::DirectHarmonic direct(m, grid.h, impact::DirectParams{});
+    const impact::FbNewton fb_newton(m, grid.h, impact::FbNewtonParams{});
+    const impact::MoreauJeanTimeDependent moreau_jean(m, grid.h, impact::MoreauJeanParams{});
+    const auto copy_of = [](const auto& stepper) { return stepper; };
+    CHECK(max_distance(run(copy_of(direct)), run(impact::DirectHarmonic(m, grid.h, {}))) == 0);
+    CHECK(max_distance(run(copy_of(fb_newton)), run(impact::FbNewton(m, grid.h, {}))) == 0);
+    CHECK(max_distance(run(copy_of(moreau_jean)),
+                       run(impact::MoreauJeanTimeDependent(m, grid.h, {}))) == 0);
+  }
+}

@@ -44,8 +44,12 @@ SchemeForce::SchemeForce(const SchemeForce& other)
     : phi_(other.phi_),
       h_(other.h_),
       has_phasor_(other.has_phasor_),
+      slow_(other.slow_),
       phasor_(other.phasor_),
-      amplitude_over_omega_(other.amplitude_over_omega_) {
+      amplitude_over_omega_(other.amplitude_over_omega_),
+      slow_impulse_(other.slow_impulse_),
+      cos_half_(other.cos_half_),
+      sin_half_(other.sin_half_) {
   if (other.expression_) expression_ = std::make_unique<ForceFunction>(*other.expression_);
 }
 
