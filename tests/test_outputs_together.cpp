@@ -108,7 +108,10 @@ TEST_CASE("outputs: the events stop at --max-rows like the rows, unless --force"
 TEST_CASE("outputs: running out of memory leaves no temporary and says so",
           "[output][regression]") {
 #if defined(__SANITIZE_ADDRESS__)
-  SKIP("AddressSanitizer reserves terabytes of address space: ulimit -v cannot apply");
+  // Catch2 v2 has no SKIP: the case passes, saying why it measured nothing.
+  SUCCEED(
+      "not run: AddressSanitizer reserves terabytes of address space, so ulimit -v cannot apply");
+  return;
 #endif
   TempDir dir;
   dir.write("s.toml", kShort);

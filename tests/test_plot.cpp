@@ -95,7 +95,8 @@ TEST_CASE("plot: what it reads is bounded", "[cli][plot][regression]") {
   CHECK_FAILS_CLEANLY(dir, "plot /dev/zero -o z.png", 2,
                       Contains("/dev/zero, line 1: longer than 65536 bytes: not a CSV of impact"));
   // Binary data, and a header that never ends.
-  dir.write("binary.csv", std::string("t,u\n0,\0\x01\x02\n", 12));
+  constexpr char kBinary[] = "t,u\n0,\0\x01\x02\n";
+  dir.write("binary.csv", std::string(kBinary, sizeof kBinary - 1));
   CHECK_FAILS_CLEANLY(dir, "plot binary.csv", 2, Contains("binary.csv, line 2: a NUL byte"));
   dir.write("long.csv", "t" + std::string(70000, 'u') + "\n");
   CHECK_FAILS_CLEANLY(dir, "plot long.csv", 2, Contains("long.csv, line 1: longer than 65536"));
