@@ -188,13 +188,12 @@ py::dict exact(py::handle scene, py::array_t<double, py::array::c_style | py::ar
 
 PYBIND11_MODULE(impact, m) {
   using namespace impact::python;
-  namespace impact_ns = impact;
   m.doc() =
       "impact: a particle falling onto a rigid floor (Ahn and Wolf, Dynamic impact of a "
       "particle, 2013). Scenes are TOML files, TOML text or dicts, read and checked as `impact "
       "run` reads them.";
-  py::register_exception<impact_ns::SceneError>(m, "SceneError", PyExc_ValueError);
-  py::register_exception<impact_ns::NumericalError>(m, "NumericalError", PyExc_ArithmeticError);
+  py::register_exception<impact::SceneError>(m, "SceneError", PyExc_ValueError);
+  py::register_exception<impact::NumericalError>(m, "NumericalError", PyExc_ArithmeticError);
   m.def("run", &run, py::arg("scene"), py::kw_only(), py::arg("set") = py::none(),
         py::arg("method") = py::none(), py::arg("every") = py::none(),
         py::arg("against") = py::none(),
