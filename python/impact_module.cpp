@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "give_array.hpp"
 #include "impact/channels.hpp"
 #include "impact/error_norms.hpp"
 #include "impact/format.hpp"
@@ -24,14 +25,6 @@ namespace py = pybind11;
 
 namespace impact::python {
 namespace {
-
-// A vector's storage handed to NumPy as it is (no copy): the array owns it through a capsule.
-template <class T>
-py::array_t<T> give(std::vector<T>&& values) {
-  auto* owned = new std::vector<T>(std::move(values));
-  py::capsule owner(owned, [](void* p) { delete static_cast<std::vector<T>*>(p); });
-  return py::array_t<T>(static_cast<py::ssize_t>(owned->size()), owned->data(), owner);
-}
 
 bool against_exact(py::handle against) {
   if (against.is_none()) return false;

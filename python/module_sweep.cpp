@@ -13,6 +13,7 @@
 
 #include "cli/sweep_csv.hpp"
 #include "cli/sweep_runner.hpp"
+#include "give_array.hpp"
 #include "impact/atomic_file.hpp"
 #include "module_scene.hpp"
 
@@ -79,12 +80,8 @@ py::dict columns(const std::string& csv) {
     at = line_end + 1;
   }
   py::dict out;
-  for (std::size_t k = 0; k < names.size(); ++k) {
-    auto* owned = new std::vector<double>(std::move(values[k]));
-    py::capsule owner(owned, [](void* p) { delete static_cast<std::vector<double>*>(p); });
-    out[py::str(names[k])] =
-        py::array_t<double>(static_cast<py::ssize_t>(owned->size()), owned->data(), owner);
-  }
+  for (std::size_t k = 0; k < names.size(); ++k)
+    out[py::str(names[k])] = give(std::move(values[k]));
   out["failure"] = failures;
   return out;
 }
