@@ -40,20 +40,23 @@ py::ssize_t row_count(const Scene& scene) {
   return static_cast<py::ssize_t>(steps / every + 1 + (steps % every != 0));
 }
 
-void put_summary(py::dict& out, const RunReport& report) {
+// The summary of `impact run` under the names of its provenance sidecar (OUT.json).
+py::dict summary(const RunReport& report) {
+  py::dict out;
   const RunSummary& r = report.summary;
   out["steps"] = r.steps;
   out["contact_steps"] = r.contact_steps;
   out["iterations"] = r.iterations;
   out["max_iterations_per_step"] = r.max_iterations;
   out["wall_s"] = report.seconds;
-  if (!report.errors) return;
+  if (!report.errors) return out;
   const ErrorNorms& e = *report.errors;
   out["err_u_sup"] = e.sup_u;
   out["err_v_l1"] = e.l1_v;
   out["err_E_T"] = e.energy_end;
   out["err_first_impact"] = e.first_impact;
   out["reference_s"] = report.reference_seconds;
+  return out;
 }
 
 py::dict run(py::handle scene, py::handle set, py::handle method, py::handle every,
@@ -113,7 +116,7 @@ py::dict run(py::handle scene, py::handle set, py::handle method, py::handle eve
   for (std::size_t k = 0; k < columns.size(); ++k)
     out[py::str(std::string(channel_name(s.output.channels[k])))] = columns[k];
   out["method"] = std::string(method_info(s.method).name);
-  put_summary(out, report);
+  out["summary"] = summary(report);
   return out;
 }
 
@@ -192,9 +195,10 @@ PYBIND11_MODULE(impact, m) {
         py::arg("against") = py::none(),
         "Runs a scene as `impact run` does. Returns a dict: 't' and the scene's output channels "
         "(u, v, N, E: float64; iterations: int64) as NumPy arrays holding the doubles of the "
-        "CSV rows, 'method', the summary (steps, contact_steps, iterations, "
-        "max_iterations_per_step, wall_s) and with against='exact' the errors (err_u_sup, "
-        "err_v_l1, err_E_T, err_first_impact, reference_s). set: {'table.key': value} as "
+        "CSV rows, 'method', and 'summary': a dict of steps, contact_steps, iterations, "
+        "max_iterations_per_step, wall_s and with against='exact' the errors err_u_sup, "
+        "err_v_l1, err_E_T, err_first_impact, reference_s (the names of impact run's OUT.json). "
+        "set: {'table.key': value} as "
         "--set; method: method.name; every: output.every. A bad scene raises SceneError (a "
         "ValueError) with the reader's message.");
   m.def("events", &events, py::arg("scene"), py::kw_only(), py::arg("set") = py::none(),

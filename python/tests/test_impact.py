@@ -60,8 +60,8 @@ def test_rows_equal_the_cli_csv_bit_for_bit(tmp_path, scene):
     assert set(rows) == {"t", "u", "v", "N", "E"}
     for name, texts in rows.items():
         assert same_bits(r[name], as_doubles(texts)), name
-    assert r["steps"] == provenance["summary"]["steps"]
-    assert r["contact_steps"] == provenance["summary"]["contact_steps"]
+    for key in ("steps", "contact_steps", "iterations", "max_iterations_per_step"):
+        assert r["summary"][key] == provenance["summary"][key], key
 
 
 @pytest.mark.parametrize("method", ["moreau_jean", "fb_newton", "exact"])
@@ -78,8 +78,8 @@ def test_errors_against_exact_equal_the_cli(tmp_path):
     _, provenance = cli_run(tmp_path, COR075, "--against", "exact")
     r = impact.run(COR075, against="exact")
     for key in ("err_u_sup", "err_v_l1", "err_E_T", "err_first_impact"):
-        assert same_bits(r[key], provenance["summary"][key]), key
-    assert np.isfinite(r["err_u_sup"]) and r["err_u_sup"] > 0  # direct is not exact
+        assert same_bits(r["summary"][key], provenance["summary"][key]), key
+    assert np.isfinite(r["summary"]["err_u_sup"]) and r["summary"]["err_u_sup"] > 0  # not exact
 
 
 def test_text_and_dict_scenes_read_as_the_file():
@@ -160,3 +160,15 @@ def test_exact_equals_the_exact_method_at_grid_times(tmp_path):
     assert same_bits(e["t"], t[::-1])
     assert same_bits(e["u"][::-1], as_doubles(rows["u"]))
     assert same_bits(e["v"][::-1], as_doubles(rows["v"]))
+
+
+def test_iterations_channel_is_int64_and_equals_the_cli(tmp_path):
+    rows, _ = cli_run(tmp_path, COR075, "--set", "method.name=fb_newton", "--set",
+                      'output.channels=["u", "iterations"]', "--set", "output.every=10")
+    r = impact.run(COR075, method="fb_newton", every=10,
+                   set={"output.channels": ["u", "iterations"]})
+    assert r["iterations"].dtype == np.int64
+    assert r["iterations"].tolist() == [int(x) for x in rows["iterations"]]
+    # A row carries the iterations of the steps since the previous row: they add up to the run's.
+    assert r["iterations"].sum() == r["summary"]["iterations"] > 0
+    assert same_bits(r["u"], as_doubles(rows["u"]))
