@@ -57,6 +57,7 @@ help:
 	@echo "make claims       print the claims ledger's verdicts with the latest measured numbers"
 	@echo "make claims-md    regenerate paper_notes/claims.md from claims_source.md and the references"
 	@echo "make build        configure and build everything, tests included"
+	@echo "make python       build the Python module impact and print the PYTHONPATH that imports it"
 	@echo "make performance  Google Benchmark throughput (ns per step) and the ensemble; not in all"
 	@echo "make work_precision-siconos  the work-precision study with Siconos's solvers (installs it)"
 	@echo "make refresh-timing-figures  measure again and update the committed timing figures:"
@@ -91,6 +92,12 @@ tools: configure
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+# The Python module alone (README.md, "Using impact from Python"), and how to import it.
+.PHONY: python
+python: configure
+	@cmake --build $(BUILD) -j $(JOBS) --target impact_python
+	@echo "export PYTHONPATH=$(abspath $(BUILD))/python  # then: /usr/bin/python3 -c 'import impact'"
 
 # Each experiment's experiment.mk adds its name to EXPERIMENTS and lists its outputs in
 # <name>_OUTPUTS with real file dependencies, so a second `make all` redoes nothing.
@@ -176,7 +183,8 @@ FUZZ_SECONDS ?= 60
 .PHONY: asan-test fuzz fuzz-long determinism
 
 asan-test: deps
-	@cmake -S . -B $(ASAN_BUILD) $(CMAKE_FLAGS) -DIMPACT_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	@cmake -S . -B $(ASAN_BUILD) $(CMAKE_FLAGS) -DIMPACT_SANITIZE=ON -DIMPACT_PYTHON=OFF \
+	  -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 	  > $(ASAN_BUILD).configure.log 2>&1 || { cat $(ASAN_BUILD).configure.log; exit 1; }
 	@cmake --build $(ASAN_BUILD) -j $(JOBS)
 	cd $(ASAN_BUILD) && ctest --output-on-failure -j $(JOBS) -LE scale

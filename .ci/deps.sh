@@ -3,7 +3,7 @@
 # Used by `make deps` (and so by `make all` and `make test`).
 set -euo pipefail
 packages=(cmake make g++ libeigen3-dev libgsl-dev gnuplot-nox catch2 libtomlplusplus-dev libcli11-dev
-          libmuparser-dev pkg-config)
+          libmuparser-dev pkg-config pybind11-dev python3-numpy python3-pytest)
 [ -n "${IMPACT_EXTRA_PACKAGES:-}" ] && read -r -a extra <<<"$IMPACT_EXTRA_PACKAGES" && packages+=("${extra[@]}")
 
 missing=()
@@ -18,7 +18,8 @@ if ! command -v apt-get >/dev/null 2>&1; then
   cat >&2 <<MSG
 impact: missing packages: ${missing[*]}
 This is not a Debian-like system, so install by hand: CMake >= 3.18, a C++20 compiler (g++ >= 12),
-Eigen 3, GSL, gnuplot, Catch2 v2, toml++ v3 (compiled library), CLI11 v2, muparser, pkg-config,
+Eigen 3, GSL, gnuplot, Catch2 v2, toml++ v3 (compiled library), CLI11 v2, muparser, pkg-config
+(and for the Python module: pybind11, NumPy, pytest),
 then rerun make.
 MSG
   exit 1

@@ -1,0 +1,36 @@
+// How the Python module reads its `scene` argument (a path, a TOML text or a dict) and its
+// keywords (set, method, every) into the scene reader's file and --set strings, so that a scene
+// from Python is read and checked exactly as `impact run SCENE --set ...` reads it.
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+#include <string>
+#include <vector>
+
+#include "scene/read_scene.hpp"
+
+namespace impact::python {
+
+struct SceneSource {
+  std::string path;  // a scene file; empty when the scene is `text`
+  std::string text;  // the TOML text of a string or a dict scene
+  std::string name;  // what messages call a scene given as text: "<string>", "<dict>"
+  std::vector<std::string> overrides;
+};
+
+// scene: a path (str or os.PathLike), a TOML text (a str with a newline) or a dict of tables;
+// set: a dict {"table.key": value} or a list of "table.key=value" strings; method and every, when
+// not None, add method.name and output.every after them. Throws pybind11::type_error for an
+// argument of the wrong type.
+SceneSource scene_source(pybind11::handle scene, pybind11::handle set, pybind11::handle method,
+                         pybind11::handle every);
+
+// The scene and its stepper, or SceneError as `impact run` reports it.
+Run load(const SceneSource& source);
+
+// The text of a --set value: TOML's spelling of a bool or a number (a float in round-trip
+// precision), a string as it is (the reader takes a bare word as a string).
+std::string set_value(pybind11::handle value);
+
+}  // namespace impact::python

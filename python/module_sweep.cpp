@@ -1,0 +1,148 @@
+#include "module_sweep.hpp"
+
+#include <pybind11/numpy.h>
+#include <sys/mman.h>
+#include <unistd.h>
+
+#include <charconv>
+#include <limits>
+#include <string>
+#include <system_error>
+#include <thread>
+#include <vector>
+
+#include "cli/sweep_csv.hpp"
+#include "cli/sweep_runner.hpp"
+#include "give_array.hpp"
+#include "impact/atomic_file.hpp"
+#include "module_scene.hpp"
+
+namespace py = pybind11;
+
+namespace impact::python {
+namespace {
+
+// A file in memory, for the scene text of a sweep given as text or a dict (SweepGrid reads a
+// path) and for the rows the engine writes (to an AtomicFile, here /dev/fd/N written in place).
+class MemoryFile {
+ public:
+  explicit MemoryFile(const char* name) : fd_(memfd_create(name, MFD_CLOEXEC)) {
+    if (fd_ < 0) throw std::system_error(errno, std::generic_category(), "memfd_create");
+  }
+  MemoryFile(const MemoryFile&) = delete;
+  MemoryFile& operator=(const MemoryFile&) = delete;
+  ~MemoryFile() { close(fd_); }
+  std::string path() const { return "/dev/fd/" + std::to_string(fd_); }
+  void write(const std::string& text) const {
+    if (::write(fd_, text.data(), text.size()) != static_cast<ssize_t>(text.size()))
+      throw std::system_error(errno, std::generic_category(), "write to a memory file");
+  }
+  std::string read() const {
+    std::string text;
+    char buffer[1 << 16];
+    for (off_t at = 0;;) {
+      const ssize_t n = pread(fd_, buffer, sizeof buffer, at);
+      if (n < 0) throw std::system_error(errno, std::generic_category(), "read a memory file");
+      if (n == 0) return text;
+      text.append(buffer, static_cast<std::size_t>(n));
+      at += n;
+    }
+  }
+
+ private:
+  int fd_;
+};
+
+// The CSV of `impact sweep` as columns: the numbers as float64 (NaN where a point failed), the
+// failure reasons as a list of str.
+py::dict columns(const std::string& csv) {
+  std::vector<std::string> names;
+  std::size_t at = 0;
+  const std::size_t header_end = csv.find('\n');
+  for (std::size_t comma; (comma = csv.find(',', at)) < header_end; at = comma + 1)
+    names.push_back(csv.substr(at, comma - at));
+  std::vector<std::vector<double>> values(names.size());
+  py::list failures;
+  for (at = header_end + 1; at < csv.size();) {
+    for (auto& column : values) {
+      const std::size_t comma = csv.find(',', at);
+      double x = std::numeric_limits<double>::quiet_NaN();
+      if (comma > at) std::from_chars(csv.data() + at, csv.data() + comma, x);
+      column.push_back(x);
+      at = comma + 1;
+    }
+    const std::size_t line_end = csv.find('\n', at);
+    std::string failure;
+    if (line_end > at)  // "...", with "" for a quote
+      for (std::size_t i = at + 1; i + 1 < line_end; ++i)
+        if (failure += csv[i]; csv[i] == '"') ++i;
+    failures.append(failure);
+    at = line_end + 1;
+  }
+  py::dict out;
+  for (std::size_t k = 0; k < names.size(); ++k)
+    out[py::str(names[k])] = give(std::move(values[k]));
+  out["failure"] = failures;
+  return out;
+}
+
+py::dict sweep(py::handle scene, py::dict vary, py::handle summary, py::handle set,
+               py::handle against, int threads) {
+  SceneSource source = scene_source(scene, set, py::none(), py::none());
+  MemoryFile scene_file("impact-scene");
+  if (source.path.empty()) {
+    scene_file.write(source.text);
+    source.path = scene_file.path();
+  }
+  std::vector<SweepAxis> axes;
+  for (auto [key, spec] : vary) {
+    std::string text = py::str(key).cast<std::string>() + "=";
+    if (py::isinstance<py::str>(spec))
+      text += spec.cast<std::string>();
+    else
+      for (py::handle value : spec) {  // a NumPy scalar as the Python number it holds
+        if (text.back() != '=') text += ',';
+        text += set_value(py::hasattr(value, "item") ? value.attr("item")() : value);
+      }
+    axes.emplace_back(text);
+  }
+  std::string list;
+  if (!summary.is_none())
+    for (py::handle name : summary) {
+      if (!list.empty()) list += ',';
+      list += py::str(name).cast<std::string>();
+    }
+  const bool exact = !against.is_none();
+  if (exact && py::str(against).cast<std::string>() != "exact")
+    throw SceneError("against = " + py::str(against).cast<std::string>() +
+                     ": the only reference is 'exact' (or None)");
+  const std::vector<cli::Quantity> quantities = cli::parse_summary(list, exact);
+  if (threads <= 0) threads = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const SweepGrid grid(source.path, source.overrides, std::move(axes));
+  MemoryFile rows("impact-sweep");
+  {
+    py::gil_scoped_release release;
+    AtomicFile file(rows.path());
+    std::fputs(cli::csv_header(grid, quantities).c_str(), file.stream());
+    cli::run_points(grid, quantities, exact, cli::Shard{}, threads, "", file, false);
+    file.commit();
+  }
+  py::dict out = columns(rows.read());
+  out["points"] = grid.size();
+  return out;
+}
+
+}  // namespace
+
+void add_sweep(py::module_& m) {
+  m.def("sweep", &sweep, py::arg("scene"), py::kw_only(), py::arg("vary"),
+        py::arg("summary") = py::none(), py::arg("set") = py::none(),
+        py::arg("against") = py::none(), py::arg("threads") = 0,
+        "`impact sweep` by its own engine: vary {'table.key': 'a:b:n' | 'a:b:n:log' | list of "
+        "numbers} (the last key varies fastest), summary: a list of quantity names (None: the "
+        "default of impact sweep). Returns a dict of columns: the varied keys and the "
+        "quantities as float64 arrays (NaN where a point failed), 'failure' (a list of str, "
+        "empty where the point did not fail) and 'points'.");
+}
+
+}  // namespace impact::python
