@@ -9,13 +9,26 @@ install(TARGETS impact_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 # Left out, as the core's implementation: gsl_errors.hpp, processor.hpp, step_quadrature.hpp and
 # work_energy.hpp (no public header includes them).
 set(IMPACT_PUBLIC_HEADERS
-  impact.hpp atomic_file.hpp channels.hpp contact.hpp direct.hpp direct_located.hpp ensemble.hpp
+  impact.hpp atomic_file.hpp chain.hpp chain_moreau_jean.hpp chain_reference.hpp channels.hpp
+  contact.hpp contact_law.hpp direct.hpp direct_located.hpp ensemble.hpp
   error_norms.hpp event_driven.hpp event_log.hpp event_track.hpp events.hpp exact.hpp
   fb_newton.hpp flight_search.hpp force.hpp format.hpp free_flight.hpp harmonic_series.hpp
   model.hpp moreau_jean.hpp ode_flight.hpp output.hpp penalty.hpp registry.hpp repeats.hpp
   restitution.hpp row_stream.hpp run.hpp run_scene.hpp scene.hpp scheme_flight.hpp stepper.hpp
   summary.hpp summary_lanes.hpp version.hpp)
 list(TRANSFORM IMPACT_PUBLIC_HEADERS PREPEND ${PROJECT_SOURCE_DIR}/src/impact/)
+# A public header that includes a header left out would break every program that includes it:
+# stop at configure time naming both (a new header must join the list above or stay unincluded).
+foreach(header ${IMPACT_PUBLIC_HEADERS})
+  file(STRINGS ${header} includes REGEX "^#include \"impact/")
+  foreach(line ${includes})
+    string(REGEX REPLACE "^#include \"impact/([^\"]+)\".*" "\\1" included "${line}")
+    if(NOT "${PROJECT_SOURCE_DIR}/src/impact/${included}" IN_LIST IMPACT_PUBLIC_HEADERS)
+      message(FATAL_ERROR "cmake/install.cmake: the public header ${header} includes "
+                          "impact/${included}, which is not installed: add it to the list")
+    endif()
+  endforeach()
+endforeach()
 install(FILES ${IMPACT_PUBLIC_HEADERS} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/impact)
 
 set(IMPACT_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/impact)

@@ -4,6 +4,9 @@
 // the writers of rows and events.
 #pragma once
 
+#include "impact/chain_moreau_jean.hpp"
+#include "impact/chain_reference.hpp"
+#include "impact/contact_law.hpp"
 #include "impact/direct.hpp"
 #include "impact/direct_located.hpp"
 #include "impact/ensemble.hpp"
