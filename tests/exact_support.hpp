@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "check_near.hpp"
 #include "impact/exact.hpp"
 
 using impact::energy;
@@ -40,11 +41,3 @@ inline double before(double t) {
 }
 
 }  // namespace
-
-// |a - b| <= tol, printing all three with full precision on failure.
-#define CHECK_NEAR(a, b, tol)                                                                   \
-  do {                                                                                          \
-    const double a_ = (a), b_ = (b), tol_ = (tol);                                              \
-    INFO(std::setprecision(17) << #a " = " << a_ << ", " #b " = " << b_ << ", tol = " << tol_); \
-    CHECK(std::fabs(a_ - b_) <= tol_);                                                          \
-  } while (0)

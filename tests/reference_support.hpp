@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "check_near.hpp"
 #include "impact/model.hpp"
 
 namespace impact::testing {
@@ -48,10 +49,3 @@ inline Model model_of(double f, std::optional<double> cor) {
 }
 
 }  // namespace impact::testing
-
-#define CHECK_NEAR(a, b, tol)                                                                   \
-  do {                                                                                          \
-    const double a_ = (a), b_ = (b), tol_ = (tol);                                              \
-    INFO(std::setprecision(17) << #a " = " << a_ << ", " #b " = " << b_ << ", tol = " << tol_); \
-    CHECK(std::fabs(a_ - b_) <= tol_);                                                          \
-  } while (0)

@@ -6,24 +6,16 @@
 # tests/cmake/CtestEntries.cmake checks the whole map after discovery (test_ctest_entries).
 #
 # Input: TEST_EXECUTABLE.
+include("${CMAKE_CURRENT_LIST_DIR}/CatchNameList.cmake")
 execute_process(COMMAND "${TEST_EXECUTABLE}" --list-test-names-only OUTPUT_VARIABLE names
                 RESULT_VARIABLE result)
 if(result LESS 0)
   message(FATAL_ERROR "CatchTestNames: ${TEST_EXECUTABLE} --list-test-names-only failed: ${result}")
 endif()
 set(bad "")
-# Split on newlines only: a CMake list also splits at ';' and not inside [...].
-string(REPLACE ";" "<semicolon>" names "${names}")
-string(REPLACE "[" "<bracket>" names "${names}")
-string(REPLACE "]" "<close-bracket>" names "${names}")
-string(REPLACE "\n" ";" names "${names}")
+catch_name_list("${names}" names)
 foreach(name IN LISTS names)
-  if(name STREQUAL "")
-    continue()
-  endif()
-  string(REPLACE "<semicolon>" ";" name "${name}")
-  string(REPLACE "<bracket>" "[" name "${name}")
-  string(REPLACE "<close-bracket>" "]" name "${name}")
+  catch_name_unmask("${name}" name)
   if(name MATCHES "[;\\\\]" OR name MATCHES "^[ ~\"#*]" OR name MATCHES "[ *]$")
     string(APPEND bad "  \"${name}\"\n")
   endif()

@@ -8,6 +8,7 @@
 # Input: CTEST_COMMAND, CTEST_DIR, EXECUTABLE_DIR, SOURCES_DIR. Prints one line per defect to
 # standard error and fails when there is one; prints the counts otherwise. An entry is named
 # "test_x:<test case>" (catch_discover_tests's TEST_PREFIX), except python_module (pytest).
+include("${CMAKE_CURRENT_LIST_DIR}/CatchNameList.cmake")
 execute_process(COMMAND "${CTEST_COMMAND}" --show-only=json-v1 WORKING_DIRECTORY "${CTEST_DIR}"
                 OUTPUT_VARIABLE json RESULT_VARIABLE result ERROR_VARIABLE errors)
 if(NOT result EQUAL 0)
@@ -84,18 +85,9 @@ foreach(source IN LISTS sources)
   if(result LESS 1)
     string(APPEND defects "${executable_name}: lists no test case\n")
   endif()
-  # Split on newlines only: a CMake list also splits at ';' and not inside [...].
-  string(REPLACE ";" "<semicolon>" names "${names}")
-  string(REPLACE "[" "<bracket>" names "${names}")
-  string(REPLACE "]" "<close-bracket>" names "${names}")
-  string(REPLACE "\n" ";" names "${names}")
+  catch_name_list("${names}" names)
   foreach(name IN LISTS names)
-    if(name STREQUAL "")
-      continue()
-    endif()
-    string(REPLACE "<semicolon>" ";" name "${name}")
-    string(REPLACE "<bracket>" "[" name "${name}")
-    string(REPLACE "<close-bracket>" "]" name "${name}")
+    catch_name_unmask("${name}" name)
     math(EXPR cases "${cases} + 1")
     string(MD5 key "${executable_name}\n${name}")
     if(NOT DEFINED entries_of_${key})
