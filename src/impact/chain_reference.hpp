@@ -7,12 +7,32 @@
 // jump a root, then GSL's Brent on a bracket where the gap decreases strictly) finds each impact.
 // At an impact Newton's law acts on the lower mass alone, x1'+ = -e x1'- (the one particle's law,
 // restitution.md), x2' unchanged, with the impulse m1 (1 + e) |x1'-|.
-// Not followed: a rest of the lower mass on the floor. With e = 1 there is none; with 0 < e < 1
-// the impacts may accumulate (as the paper's particle's do) and then the run's impact budget runs
-// out and it says so (NumericalError); e = 0 is refused. Tests use scenes without a rest.
+//
+// Rest (chain_rest.hpp). A lower mass on the floor with zero speed (after an impact with e = 0, a
+// cut-off accumulation, or at the start) rests there while the floor's push N = -(m1 g + k d) is
+// >= 0: x1 = phi, x1' = 0, the upper mass oscillating in closed form. With N < 0 (or N = 0
+// decreasing) it leaves at once, with zero speed, and the flight's first stretch is certified by
+// chain_departure(). A rest ends at the lift-off, the first time N reaches 0 decreasing, found by
+// the certified search of flight_search.hpp on N and refined by GSL's Brent; the flight resumes
+// from there. During a rest the floor's impulse is the integral of N, which the upper mass's
+// momentum gives in closed form: m2 (x2'(b) - x2'(a)) - (m1 + m2) g (b - a).
+//
+// Accumulation (0 < e < 1). Impacts accumulate as the particle's do, t_inf = t_k + 2 e V_k /
+// (p (1 - e)) for a constant push per unit mass p = -(g + (k / m1) d). The reference cuts the
+// sequence off as the particle's exact track does (event_track.hpp): at an impact whose speed V is
+// below kChatterCutoff (1e-8) times the largest impact speed seen, when chain_chatter_window()
+// certifies that all further impacts lie within a window W after it and the lower mass rests
+// after them, that impact is made plastic and the rest starts there. The reference then differs
+// from the exact solution only inside that window: by at most the bounce height (e V)^2 / (2 p_min)
+// (~1e-16 of the drop height Vmax^2 / (2 p): the positions' rounding) in x1, e V in x1', and in the
+// upper mass by what the spring passes on from x1 over W; its rest starts up to W before t_inf
+// (W ~ 2e-8 e / (1 - e) of a drop's duration). Without a certificate the impacts are followed one
+// by one, up to the run's impact budget (NumericalError when it runs out). e = 1 has no
+// accumulation; e = 0 makes every impact plastic.
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -32,35 +52,58 @@ struct ChainImpact {
   double v_before = 0, v_after = 0;  // the lower mass's velocity
 };
 
+// A rest of the lower mass on the floor, on [t, lift); lift is infinity when it lasts past t_end.
+struct ChainRest {
+  double t = 0;
+  double lift = std::numeric_limits<double>::infinity();
+};
+
 class ChainReference {
  public:
-  // Throws std::invalid_argument for bad data (check_chain, check_chain_state), COR = 0 or a
-  // t_end that is not finite and >= 0; NumericalError when a budget runs out.
+  // Throws std::invalid_argument for bad data (check_chain, check_chain_state) or a t_end that is
+  // not finite and >= 0; NumericalError when a budget runs out or the lower mass reaches the floor
+  // with zero speed and zero contact force changing neither way (which way it goes is undecided).
   ChainReference(const Chain& chain, const ChainState& initial, const ChainReferenceParams& params);
 
   // State at t in [0, t_end]; at an impact instant the velocity after it (right-continuous).
   ChainState at(double t) const;
-  // Contact impulse on the lower mass in (t0, t1]: the sum of its impacts' m1 (1 + e) |x1'-|.
+  // Contact impulse on the lower mass in (t0, t1]: its impacts' m1 (x1'+ - x1'-) and the integral
+  // of N over its rests.
   double impulse(double t0, double t1) const;
+  // The floor's push N on the lower mass at t during a rest, 0 in flight (impacts not counted).
+  double contact_force(double t) const;
   const std::vector<ChainImpact>& impacts() const { return impacts_; }
+  const std::vector<ChainRest>& rests() const { return rests_; }
 
  private:
-  // A flight from t0 with the state s0 (positions as gaps q - phi) just after an impact.
-  struct Flight {
+  // A flight or a rest from t0 with the state s0 (positions as gaps q - phi); a flight has no
+  // contact before `certified`.
+  struct Segment {
     double t0 = 0;
     ChainState s0;
+    bool resting = false;
+    double certified = 0;
   };
-  ChainState gaps_at(const Flight& flight, double t) const;
+  ChainState gaps_at(const Segment& segment, double t) const;
+  const Segment& segment_at(double t) const;
+  // The next event after the last segment: an impact (with a flight or a rest after it) or a
+  // lift-off; false when there is none before t_end.
+  bool next_impact(const ChainReferenceParams& params, long& budget);
+  bool next_lift(const ChainReferenceParams& params, long& budget);
+  // A lower mass on the floor with zero speed at t in the state s (gaps): a rest, or a flight.
+  void settle(double t, const ChainState& s);
 
   Chain chain_;
   double e_, c1_, c2_, w_;  // COR, m1 / (m1 + m2), m2 / (m1 + m2), the stretch's frequency
   double t_end_;
-  std::vector<Flight> flights_;
+  double fastest_ = 0;  // the largest impact speed so far, for the cut-off of an accumulation
+  std::vector<Segment> segments_;
   std::vector<ChainImpact> impacts_;
+  std::vector<ChainRest> rests_;
 };
 
 // The reference as a stepper (stepper.hpp), sampled at t_l = l h, so that simulate() runs it as it
-// runs ChainMoreauJean; initialize() computes the flights from t_l to params.t_end.
+// runs ChainMoreauJean; initialize() computes the flights and rests from t_l to params.t_end.
 class ChainReferenceStepper {
  public:
   using StateType = ChainState;
