@@ -1,8 +1,9 @@
 // Section 4 (existence proof): convergence of u_h of (4-1)-(4-3) as h -> 0, the effective COR of
 // an impact, the identities (4-9) and (4-10), and the numbers of
 // experiments/convergence/reference.toml. Every run goes through the experiment's own functions
-// (src/analysis/convergence_study.hpp): the cheap run is the experiment's first rows (h >= 1e-4,
-// at most 1e5 steps per run), the dense runs sweep h >= 1e-4 finely enough to fit an order.
+// (src/analysis/convergence/convergence_study.hpp): the cheap run is the experiment's first rows (h
+// >= 1e-4, at most 1e5 steps per run), the dense runs sweep h >= 1e-4 finely enough to fit an
+// order.
 #include <toml++/toml.h>
 
 #include <catch2/catch.hpp>
@@ -14,13 +15,14 @@
 #include <string_view>
 #include <vector>
 
-#include "analysis/convergence_study.hpp"
+#include "analysis/convergence/convergence_study.hpp"
+#include "analysis/convergence/proof_tallies.hpp"
 #include "analysis/fit.hpp"
-#include "analysis/proof_tallies.hpp"
 #include "analysis/reference.hpp"
 #include "impact/direct.hpp"
 
 using namespace impact;
+using namespace impact::convergence;
 
 namespace {
 

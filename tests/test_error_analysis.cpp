@@ -1,19 +1,21 @@
 // The error analysis of paper_notes/error_analysis.md (the paper's future work, Section 6): the
 // bounds as functions (error_bounds.hpp), the campaign that checks them on random scenes and the
 // sweeps behind the figures, through the experiment's own functions
-// (src/analysis/error_analysis.hpp). The claim tests recompute the campaign (4800 scenes, two
-// threads, a few seconds) or the sweep they need, and assert what the ledger rows C90-C95 say.
+// (src/analysis/error_analysis/error_analysis.hpp). The claim tests recompute the campaign (4800
+// scenes, two threads, a few seconds) or the sweep they need, and assert what the ledger rows
+// C90-C95 say.
 #include <toml++/toml.h>
 
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <string>
 
-#include "analysis/error_analysis.hpp"
-#include "analysis/error_bounds.hpp"
+#include "analysis/error_analysis/error_analysis.hpp"
+#include "analysis/error_analysis/error_bounds.hpp"
 #include "analysis/reference.hpp"
 
 using namespace impact;
+using namespace impact::error_analysis;
 
 namespace {
 

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/figure2.hpp"
+#include "analysis/figure2/figure2.hpp"
 #include "analysis/reference.hpp"
 #include "analysis/spline_contact.hpp"
 #include "reference_support.hpp"
@@ -140,7 +140,7 @@ TEST_CASE(
 
 TEST_CASE("figure2: run_figure2 reproduces experiments/figure2/reference.toml",
           "[figure2][regression]") {
-  const toml::table measured = impact::run_figure2({IMPACT_SOURCE_DIR, ""});
+  const toml::table measured = impact::figure2::run_figure2({IMPACT_SOURCE_DIR, ""});
   const std::vector<std::string> differences = impact::compare_with_reference(
       measured, impact::read_reference(IMPACT_SOURCE_DIR, "figure2"));
   for (const std::string& d : differences) FAIL_CHECK(d);

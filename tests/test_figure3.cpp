@@ -1,6 +1,6 @@
 // Figure 3 (Section 5.2, f = 0, u0 = 5, v0 = -1, T = 10, h = 1e-3): the paper's claims about the
-// two columns, through the functions run_figure3 is made of (analysis/figure3.hpp), and its key
-// numbers against experiments/figure3/reference.toml.
+// two columns, through the functions run_figure3 is made of (analysis/figure3/figure3.hpp), and its
+// key numbers against experiments/figure3/reference.toml.
 #include <toml++/toml.h>
 
 #include <catch2/catch.hpp>
@@ -10,11 +10,12 @@
 #include <string_view>
 #include <vector>
 
-#include "analysis/figure3.hpp"
+#include "analysis/figure3/figure3.hpp"
 #include "analysis/reference.hpp"
 #include "analysis/rest.hpp"
 
 using namespace impact;
+using namespace impact::figure3;
 
 namespace {
 

@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "analysis/figure4.hpp"
-#include "analysis/figure4_readings.hpp"
+#include "analysis/figure4/figure4.hpp"
+#include "analysis/figure4/figure4_readings.hpp"
 #include "analysis/fit.hpp"
 #include "analysis/reference.hpp"
 #include "impact/event_track.hpp"
@@ -20,6 +20,7 @@
 #include "impact/exact.hpp"
 
 using namespace impact;
+using namespace impact::figure4;
 
 namespace {
 

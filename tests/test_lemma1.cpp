@@ -11,13 +11,14 @@
 #include <string>
 #include <vector>
 
-#include "analysis/lemma1.hpp"
+#include "analysis/lemma1/lemma1.hpp"
 #include "analysis/reference.hpp"
 #include "impact/exact.hpp"
 #include "reference_support.hpp"
 #include "scene/read_scene.hpp"
 
 using namespace impact;
+using namespace impact::lemma1;
 using impact::testing::model_of;
 using impact::testing::number;
 

@@ -10,12 +10,13 @@
 #include <string>
 #include <vector>
 
-#include "analysis/bounds.hpp"
-#include "analysis/lemma3.hpp"
+#include "analysis/lemma3/bounds.hpp"
+#include "analysis/lemma3/lemma3.hpp"
 #include "analysis/reference.hpp"
 #include "reference_support.hpp"
 
 using namespace impact;
+using namespace impact::lemma3;
 using impact::testing::model_of;
 using impact::testing::number;
 

@@ -1,20 +1,23 @@
 // Lemma 3 (Section 4) and the energy statements with a time-dependent body force
-// f(t) = f + a sin(omega t + phase): the readings of |f| (analysis/lemma3_forcing.hpp), the proof's
-// bound redone, the energies E and W (analysis/energy_forcing.hpp). The claims recompute their
-// numbers on reduced_forcing_sweep() (512 runs of 200 steps); the full sweep is the experiment's.
+// f(t) = f + a sin(omega t + phase): the readings of |f| (analysis/lemma3/lemma3_forcing.hpp), the
+// proof's bound redone, the energies E and W (analysis/energy_forcing.hpp). The claims recompute
+// their numbers on reduced_forcing_sweep() (512 runs of 200 steps); the full sweep is the
+// experiment's.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
 #include <vector>
 
-#include "analysis/bounds.hpp"
 #include "analysis/energy_forcing.hpp"
-#include "analysis/lemma1.hpp"
-#include "analysis/lemma3_forcing.hpp"
+#include "analysis/lemma1/lemma1.hpp"
+#include "analysis/lemma3/bounds.hpp"
+#include "analysis/lemma3/lemma3_forcing.hpp"
 #include "impact/event_track.hpp"
 #include "impact/force.hpp"
 
 using namespace impact;
+using namespace impact::lemma1;
+using namespace impact::lemma3;
 
 namespace {
 

@@ -1,8 +1,8 @@
 // Lemma 4 (uniqueness) and its proof (4-11)-(4-13): solution paths under COR = 1, weak solutions
 // of (2-1)-(2-4) that differ when COR is not fixed, the identity (4-12) on pairs of exact
 // solutions, and the numbers of experiments/lemma4/reference.toml. The runs go through the
-// experiment's own functions (src/analysis/lemma4.hpp): the cheap run is the experiment with the
-// path scenes cut to h >= 1e-4, the dense runs sweep h >= 1e-4 finely enough to fit an order.
+// experiment's own functions (src/analysis/lemma4/lemma4.hpp): the cheap run is the experiment with
+// the path scenes cut to h >= 1e-4, the dense runs sweep h >= 1e-4 finely enough to fit an order.
 #include <toml++/toml.h>
 
 #include <catch2/catch.hpp>
@@ -12,15 +12,16 @@
 #include <string>
 #include <vector>
 
-#include "analysis/energy_identity.hpp"
 #include "analysis/fit.hpp"
-#include "analysis/lemma4.hpp"
+#include "analysis/lemma4/energy_identity.hpp"
+#include "analysis/lemma4/lemma4.hpp"
+#include "analysis/lemma4/weak_solution.hpp"
 #include "analysis/path_distance.hpp"
 #include "analysis/reference.hpp"
 #include "analysis/test_functions.hpp"
-#include "analysis/weak_solution.hpp"
 
 using namespace impact;
+using namespace impact::lemma4;
 
 namespace {
 

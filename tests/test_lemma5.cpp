@@ -13,7 +13,7 @@
 #include <utility>
 #include <vector>
 
-#include "analysis/lemma5.hpp"
+#include "analysis/lemma5/lemma5.hpp"
 #include "analysis/reference.hpp"
 #include "analysis/spline_contact.hpp"
 #include "reference_support.hpp"
@@ -119,7 +119,7 @@ TEST_CASE(
 
 TEST_CASE("lemma5: run_lemma5 reproduces experiments/lemma5/reference.toml",
           "[lemma5][regression]") {
-  const toml::table measured = impact::run_lemma5({IMPACT_SOURCE_DIR, ""});
+  const toml::table measured = impact::lemma5::run_lemma5({IMPACT_SOURCE_DIR, ""});
   const toml::table reference = impact::read_reference(IMPACT_SOURCE_DIR, "lemma5");
   std::vector<std::string> differences = impact::compare_with_reference(measured, reference);
   // The ratios are quadratures of O(1) integrands summed from two pieces: 100 ulp of 1/2 covers

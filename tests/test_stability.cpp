@@ -17,10 +17,10 @@
 #include <string>
 
 #include "analysis/reference.hpp"
-#include "analysis/stability.hpp"
-#include "analysis/stability_cases.hpp"
-#include "analysis/stability_penalty.hpp"
-#include "analysis/stability_study.hpp"
+#include "analysis/stability/stability.hpp"
+#include "analysis/stability/stability_cases.hpp"
+#include "analysis/stability/stability_penalty.hpp"
+#include "analysis/stability/stability_study.hpp"
 #include "impact/fb_newton.hpp"
 #include "impact/gsl_errors.hpp"
 #include "impact/output.hpp"
@@ -29,6 +29,7 @@
 #include "stability_properties.hpp"
 
 using namespace impact;
+using namespace impact::stability;
 using namespace impact::stability_properties;
 
 TEST_CASE("C34: every method stays finite and feasible on 300 random extreme scenes",

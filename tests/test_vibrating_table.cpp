@@ -12,11 +12,12 @@
 #include <string>
 
 #include "analysis/reference.hpp"
-#include "analysis/vibrating_table.hpp"
-#include "analysis/vibrating_table_theory.hpp"
+#include "analysis/vibrating_table/vibrating_table.hpp"
+#include "analysis/vibrating_table/vibrating_table_theory.hpp"
 #include "cli_support.hpp"
 
 using namespace impact;
+using namespace impact::vibrating_table;
 
 namespace {
 

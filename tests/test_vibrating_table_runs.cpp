@@ -7,10 +7,11 @@
 #include <optional>
 #include <vector>
 
-#include "analysis/vibrating_table_sweep.hpp"
-#include "analysis/vibrating_table_theory.hpp"
+#include "analysis/vibrating_table/vibrating_table_sweep.hpp"
+#include "analysis/vibrating_table/vibrating_table_theory.hpp"
 
 using namespace impact;
+using namespace impact::vibrating_table;
 
 namespace {
 

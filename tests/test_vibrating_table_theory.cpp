@@ -7,9 +7,10 @@
 #include <numbers>
 #include <optional>
 
-#include "analysis/vibrating_table_theory.hpp"
+#include "analysis/vibrating_table/vibrating_table_theory.hpp"
 
 using namespace impact;
+using namespace impact::vibrating_table;
 
 namespace {
 

@@ -12,12 +12,13 @@
 #include <vector>
 
 #include "analysis/reference.hpp"
+#include "analysis/work_precision/work_precision_study.hpp"
 #include "analysis/work_precision_lyapunov.hpp"
 #include "analysis/work_precision_reference.hpp"
-#include "analysis/work_precision_study.hpp"
 #include "impact/registry.hpp"
 
 using namespace impact;
+using namespace impact::work_precision;
 
 namespace {
 

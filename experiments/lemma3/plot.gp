@@ -69,7 +69,7 @@ do for [format in "png svg"] {
 }
 
 # Lemma 3 with f(t) = f + a sin(omega t + phase): measured / bound for every run of the forcing
-# sweep (results/lemma3/forcing_runs.csv, src/analysis/lemma3_forcing.hpp), one column per reading
+# sweep (results/lemma3/forcing_runs.csv, src/analysis/lemma3/lemma3_forcing.hpp), one column per reading
 # of |f|, the runs spread across each column in sweep order; direct and fb_newton in two colours.
 forcing = results.'/forcing_runs.csv'
 set autoscale

@@ -1,9 +1,9 @@
-// exp_work_precision RESULTS_DIR: the work-precision study (src/analysis/work_precision_study.hpp),
-// with Siconos's Moreau-Jean (a peer of moreau_jean) and its event-driven LSODAR when CMake found
-// Siconos.
+// exp_work_precision RESULTS_DIR: the work-precision study
+// (src/analysis/work_precision/work_precision_study.hpp), with Siconos's Moreau-Jean (a peer of
+// moreau_jean) and its event-driven LSODAR when CMake found Siconos.
 #include <cstdio>
 
-#include "analysis/work_precision_study.hpp"
+#include "analysis/work_precision/work_precision_study.hpp"
 #ifdef IMPACT_HAVE_SICONOS
 #include "siconos_ball.hpp"
 #endif
@@ -43,7 +43,7 @@ toml::table run_with_siconos(const ExperimentContext& context) {
 const Experiment kExperiment{kWorkPrecisionExperiment.name, kWorkPrecisionExperiment.description,
                              &run_with_siconos};
 #else
-const impact::Experiment& kExperiment = impact::kWorkPrecisionExperiment;
+const impact::Experiment& kExperiment = impact::work_precision::kWorkPrecisionExperiment;
 #endif
 
 }  // namespace
