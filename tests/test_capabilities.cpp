@@ -17,8 +17,9 @@ namespace {
 struct Feature {
   std::string name;
   bool impact::Capabilities::*capability;
-  std::string with, without;  // the --set/--unset that give the scene the feature, or not
-  std::string refused_key;    // what a refusal names
+  std::string with, without;     // the --set/--unset that give the scene the feature, or not
+  std::string refused_key;       // what a refusal names
+  std::string scene = "s.toml";  // the scene the feature is given to
 };
 
 const std::string kScene =
@@ -37,7 +38,15 @@ const std::vector<Feature> kFeatures = {
      "--unset force.f --set 'force.expression=\"-9.80665\"'", "force.expression"},
     {"the iterations channel", &impact::Capabilities::iterations_channel,
      "--set 'output.channels=[\"u\",\"v\",\"iterations\"]'", "", "output.channels"},
+    // An internal variable the force reads (a decaying pull): [[internal]] has no --set, so its
+    // scene is another file; without it, the same force of t.
+    {"internal variables", &impact::Capabilities::internal_variables,
+     "--unset force.f --set 'force.expression=\"-9.80665 - 5 * z\"'",
+     "--unset force.f --set 'force.expression=\"-9.80665 - 5 * exp(-t)\"'", "method.name",
+     "si.toml"},
 };
+
+const std::string kInternal = "[[internal]]\nname = \"z\"\ninitial = 1.0\nrate = \"-z\"\n";
 
 }  // namespace
 
@@ -45,11 +54,14 @@ TEST_CASE("capabilities: every method honours or refuses every feature, as its t
           "[capabilities][regression]") {
   TempDir dir;
   dir.write("s.toml", kScene);
+  dir.write("si.toml", kScene + kInternal);
   for (const impact::MethodInfo& method : impact::methods())
     for (const Feature& feature : kFeatures) {
       const std::string run = "run s.toml -q --set method.name=" + std::string(method.name) + " ";
       INFO(method.name << " with " << feature.name);
-      const Result with = dir.run(run + feature.with);
+      const Result with =
+          dir.run("run " + feature.scene + " -q --set method.name=" + std::string(method.name) +
+                  " " + feature.with);
       if (method.can.*feature.capability) {
         INFO(with.err);
         REQUIRE(with.code == 0);
@@ -65,12 +77,12 @@ TEST_CASE("capabilities: every method honours or refuses every feature, as its t
 }
 
 TEST_CASE("capabilities: the table", "[capabilities]") {
-  // Restitution, Harmonic force, Expression of t, force of the State, Iterations channel,
-  // reFerence, energy Bound, exact eVents.
+  // Restitution, Harmonic force, Expression of t, force of the State, internal Variables,
+  // Iterations channel, reFerence, energy Bound, exact eVents.
   const std::vector<std::pair<std::string, std::string>> rows = {
-      {"direct", "RHES--B-"},         {"fb_newton", "RHE-I-B-"}, {"moreau_jean", "RHES----"},
-      {"penalty", "-HE-I---"},        {"exact", "RH---FBV"},     {"event_driven", "RHES-F-V"},
-      {"direct_located", "RHE-----"},
+      {"direct", "RHESZ--B-"},         {"fb_newton", "RHE--I-B-"}, {"moreau_jean", "RHESZ----"},
+      {"penalty", "-HE--I---"},        {"exact", "RH----FBV"},     {"event_driven", "RHESZ-F-V"},
+      {"direct_located", "RHE------"},
   };
   const auto row = [](const impact::Capabilities& c) {
     std::string r;
@@ -78,6 +90,7 @@ TEST_CASE("capabilities: the table", "[capabilities]") {
     r += c.harmonic_force ? 'H' : '-';
     r += c.time_expression ? 'E' : '-';
     r += c.state_force ? 'S' : '-';
+    r += c.internal_variables ? 'Z' : '-';
     r += c.iterations_channel ? 'I' : '-';
     r += c.reference ? 'F' : '-';
     r += c.energy_bound ? 'B' : '-';
@@ -96,4 +109,7 @@ TEST_CASE("capabilities: the table", "[capabilities]") {
   impact::Model state;
   state.expression = "-9.80665 - 100 * u - v";
   CHECK(impact::reference_for(state).name == "event_driven");
+  impact::Model internal;
+  internal.internal = {{"z", 1.0, "-z"}};
+  CHECK(impact::reference_for(internal).name == "event_driven");
 }

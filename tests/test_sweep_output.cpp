@@ -53,7 +53,7 @@ TEST_CASE("sweep: each point's numbers are what impact run of its scene writes, 
         StepInfo info;
         info.contact_force = number(trajectory[l][3]);
         replay(static_cast<std::int64_t>(l - 1),
-               {number(trajectory[l][1]), number(trajectory[l][2])}, info);
+               State{number(trajectory[l][1]), number(trajectory[l][2])}, info);
       }
       RunSummary run_summary;
       // `impact run` prints the iteration count of an iterative method on standard error.

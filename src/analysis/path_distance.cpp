@@ -1,5 +1,7 @@
 #include "analysis/path_distance.hpp"
 
+#include <stdexcept>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
@@ -11,17 +13,28 @@ double sup_distance(const Scene& scene, const MethodParams& other) {
   AnyStepper a = make_stepper(scene);
   AnyStepper b = make_stepper(scene.model, scene.grid.h, other);
   return std::visit(
-      [&](auto& stepper_a) {
-        LockstepStepper pair(stepper_a, b, scene.initial, scene.grid.h);
-        simulate(pair, scene.initial, scene.grid,
-                 [](std::int64_t, const State&, const StepInfo&) {});
-        return pair.sup_distance();
+      [&](auto& stepper_a) -> double {
+        if constexpr (!ParticleStepper<std::remove_cvref_t<decltype(stepper_a)>>) {
+          throw std::logic_error("sup_distance: a method with internal variables");
+        } else {
+          LockstepStepper pair(stepper_a, b, scene.initial, scene.grid.h);
+          simulate(pair, scene.initial, scene.grid,
+                   [](std::int64_t, const State&, const StepInfo&) {});
+          return pair.sup_distance();
+        }
       },
       a);
 }
 
 StepInfo step_any(AnyStepper& stepper, State& s, std::int64_t l) {
-  return std::visit([&](auto& x) { return x.do_step(s, l); }, stepper);
+  return std::visit(
+      [&](auto& x) -> StepInfo {
+        if constexpr (!ParticleStepper<std::remove_cvref_t<decltype(x)>>)
+          throw std::logic_error("step_any: a method with internal variables");
+        else
+          return x.do_step(s, l);
+      },
+      stepper);
 }
 
 double sup_distance(const ExactSolution& u, const ExactSolution& w, double T) {

@@ -5,6 +5,8 @@
 
 #include <cmath>
 #include <cstdint>
+#include <stdexcept>
+#include <type_traits>
 #include <variant>
 
 #include "impact/exact.hpp"
@@ -29,7 +31,14 @@ class LockstepStepper {
 
   void initialize(const State& s, std::int64_t l) {
     a_.initialize(s, l);
-    std::visit([&](auto& b) { b.initialize(s, l); }, b_);
+    std::visit(
+        [&](auto& b) {
+          if constexpr (!ParticleStepper<std::remove_cvref_t<decltype(b)>>)
+            throw std::logic_error("LockstepStepper: a method with internal variables");
+          else
+            b.initialize(s, l);
+        },
+        b_);
     other_ = s;
   }
 

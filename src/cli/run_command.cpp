@@ -52,12 +52,12 @@ void check_paths(const RunOptions& o) {
 // without --force.
 class EventFile {
  public:
-  EventFile(const std::string& path, const RunOptions& o)
-      : file(path), unlimited_(o.force), max_rows_(o.max_rows) {
-    write_event_header(file.stream());
+  EventFile(const std::string& path, const RunOptions& o, const Model& model)
+      : file(path), internal_(model.internal.size()), unlimited_(o.force), max_rows_(o.max_rows) {
+    write_event_header(file.stream(), model);
   }
   void write(const Event& e) {
-    bytes_ += static_cast<double>(write_event(file.stream(), e));
+    bytes_ += static_cast<double>(write_event(file.stream(), e, internal_));
     if ((++count_ > max_rows_ || bytes_ > kMaxBytesUnasked) && !unlimited_) [[unlikely]]
       throw OutputError("--events: the run has written " + round_trip(count_) + " events (" +
                             round_trip(std::round(bytes_ / 1e9)) +
@@ -70,6 +70,7 @@ class EventFile {
   AtomicFile file;
 
  private:
+  std::size_t internal_;  // the internal variables' columns
   bool unlimited_;
   double max_rows_, count_ = 0, bytes_ = 0;
 };
@@ -100,7 +101,13 @@ std::string summary_text(const Scene& scene, const RunReport& report) {
                 std::isnan(e.first_impact) ? "none (no impact in one of the two)"
                                            : round_trip(e.first_impact).c_str(),
                 report.reference_seconds);
-  return text + line;
+  text += line;
+  if (!scene.model.internal.empty()) {
+    std::snprintf(line, sizeof line, "impact: against exact: sup|z - z_exact| = %s\n",
+                  round_trip(e.sup_internal).c_str());
+    text += line;
+  }
+  return text;
 }
 
 // The provenance of the rows (provenance.hpp).
@@ -163,7 +170,7 @@ int run_command(const RunOptions& o, bool& in_place) {
   in_place = file.in_place();
   std::optional<EventFile> events;
   if (!o.events.empty()) {
-    events.emplace(o.events, o);
+    events.emplace(o.events, o, scene.model);
     in_place = in_place || events->file.in_place();
   }
   // The provenance sidecar is opened with the outputs, so that a path it cannot have is refused
@@ -172,7 +179,7 @@ int run_command(const RunOptions& o, bool& in_place) {
   if (!o.no_provenance)
     if (const std::string path = sidecar_path(o.out, file.in_place()); !path.empty())
       sidecar.emplace(path);
-  CsvWriter csv(file.stream(), scene.output.channels);
+  CsvWriter csv(file.stream(), scene.output.channels, scene.model);
   csv.header();
   // Progress only where someone watches it: stderr is a terminal that the CSV does not go to.
   Progress progress(!o.quiet && isatty(2) && !(to_stdout && isatty(1)), scene.grid.steps, start,

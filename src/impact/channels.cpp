@@ -16,12 +16,34 @@ const ChannelInfo kChannels[] = {
     {Channel::iterations, "iterations",
      "Newton or ODE-driver iterations of the steps since the previous row",
      &Capabilities::iterations_channel},
+    {Channel::z1, "z1", "internal variable 1", &Capabilities::internal_variables},
+    {Channel::z2, "z2", "internal variable 2", &Capabilities::internal_variables},
+    {Channel::z3, "z3", "internal variable 3", &Capabilities::internal_variables},
+    {Channel::z4, "z4", "internal variable 4", &Capabilities::internal_variables},
 };
+constexpr std::size_t kFixed = 5;  // the channels before z1
+static_assert(std::size(kChannels) == kFixed + kMaxInternal);
 
 }  // namespace
 
 std::span<const ChannelInfo> channels() {
-  return kChannels;
+  return std::span<const ChannelInfo>(kChannels).first(kFixed);
+}
+
+Channel internal_channel(std::size_t i) {
+  return kChannels[kFixed + i].channel;
+}
+
+std::optional<std::size_t> internal_index(Channel channel) {
+  const auto i = static_cast<std::size_t>(channel);
+  if (i < kFixed) return std::nullopt;
+  return i - kFixed;
+}
+
+std::string_view channel_name(Channel channel, const Model& model) {
+  if (const auto i = internal_index(channel); i && *i < model.internal.size())
+    return model.internal[*i].name;
+  return channel_name(channel);
 }
 
 const ChannelInfo& channel_info(Channel channel) {

@@ -3,6 +3,8 @@
 // writer read this table.
 #pragma once
 
+#include <cstddef>
+#include <optional>
 #include <span>
 #include <string_view>
 
@@ -10,7 +12,9 @@
 
 namespace impact {
 
-enum class Channel { u, v, N, E, iterations };
+// z1..z4: the model's internal variables (model.hpp), named in a scene and a CSV header by the
+// model's names; channels() lists the others.
+enum class Channel { u, v, N, E, iterations, z1, z2, z3, z4 };
 
 struct ChannelInfo {
   Channel channel;
@@ -18,7 +22,13 @@ struct ChannelInfo {
   bool Capabilities::*needs = nullptr;  // what a method must have to write it; nullptr: any
 };
 
+// The channels every model has (u, v, N, E, iterations).
 std::span<const ChannelInfo> channels();
+// The channel of the model's internal variable i (i < kMaxInternal), and which one a channel is.
+Channel internal_channel(std::size_t i);
+std::optional<std::size_t> internal_index(Channel channel);
+// The name of a channel in a scene and a CSV header: the model's name for an internal variable.
+std::string_view channel_name(Channel channel, const Model& model);
 const ChannelInfo& channel_info(Channel channel);
 inline std::string_view channel_name(Channel channel) {
   return channel_info(channel).name;

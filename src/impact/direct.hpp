@@ -137,6 +137,12 @@ class BasicDirect {
     repeats_.skip(n);
   }
 
+  // The internal variables at t_l that the next step's force of the state reads (internal.hpp).
+  void set_internal(const std::array<double, kMaxInternal>& z) const
+      requires(Kind == ForceKind::time_dependent) {
+    flight_.set_internal(z);
+  }
+
   StepInfo do_step(State& s, std::int64_t l) {
     const double since = static_cast<double>(l + 1 - anchor_l_);
     double gap_free, v_free;

@@ -2,10 +2,13 @@
 // streams (no trajectory is stored), against the reference of ReferenceSolution below.
 #pragma once
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "impact/contact.hpp"
@@ -26,6 +29,8 @@ struct ErrorNorms {
   // (the floor crossing inside that step), minus the exact first impact time; NaN when either has
   // no impact.
   double first_impact = std::numeric_limits<double>::quiet_NaN();
+  // max over l and i of |z_i^l - z_i(t_l)|, the model's internal variables (0 without them)
+  double sup_internal = 0;
   RunSummary run;
 };
 
@@ -37,13 +42,19 @@ struct ErrorNorms {
 // bit at()).
 class ReferenceSolution {
  public:
+  // With internal variables: event_driven's track, z from their initial values (model.hpp).
   ReferenceSolution(const Model& model, const State& initial, double end) : initial_(initial) {
-    if (constant_force(model))
+    if (!model.internal.empty()) {
+      OdeLaw law(model, OdeSettings{.end = end});
+      law.set_internal(with_internal(model, initial).z);
+      ode_track_.emplace(std::move(law), model, initial, 0.0);
+    } else if (constant_force(model)) {
       closed_form_.emplace(model, initial);
-    else if (model.expression.empty())
+    } else if (model.expression.empty()) {
       track_.emplace(model, initial, 0.0);
-    else
+    } else {
       ode_track_.emplace(OdeLaw(model, OdeSettings{.end = end}), model, initial, 0.0);
+    }
     if (closed_form_)
       rest_ = closed_form_->rest_time().value_or(std::numeric_limits<double>::infinity());
   }
@@ -56,6 +67,10 @@ class ReferenceSolution {
     if (!(t > 0)) return initial_;  // an impact at 0+ shows from the first step on (exact.hpp)
     double impulse = 0;
     return track_ ? track_->advance(t, impulse) : ode_track_->advance(t, impulse);
+  }
+  // The internal variables at the t of the last at(t) (with internal variables).
+  std::array<double, kMaxInternal> internal_at(double t) const {
+    return ode_track_->law().internal_at(t);
   }
   std::optional<double> first_impact() const {
     if (closed_form_) return closed_form_->impact_time(1);
@@ -78,6 +93,7 @@ class ErrorObserver {
  public:
   ErrorObserver(const Model& model, const State& initial, const Grid& grid)
       : exact_(model, initial, grid.end()),
+        internal_(model.internal.size()),
         model_(model),
         grid_(grid),
         previous_(initial),
@@ -85,13 +101,17 @@ class ErrorObserver {
     pending_.reserve(kChunk);
   }
 
-  void operator()(std::int64_t l, const State& s, const StepInfo& info) {
+  // St: State, or StateWithInternal (the internal variables are compared too).
+  template <class St>
+  void operator()(std::int64_t l, const St& s, const StepInfo& info) {
     if (!seen_contact_ && l > 0 && info.contact_force > 0) {
       seen_contact_ = true;
       first_crossing_ = grid_.t(l - 1) + floor_crossing(model_, previous_);
     }
     previous_ = s;
     pending_.push_back({l, s});
+    if constexpr (std::is_same_v<St, StateWithInternal>)
+      if (internal_ > 0) pending_internal_.push_back(s.z);
     if (pending_.size() == kChunk) compare_pending();
   }
 
@@ -116,13 +136,20 @@ class ErrorObserver {
   };
   void compare_pending() {
     const auto start = std::chrono::steady_clock::now();
-    for (const Sample& p : pending_) {
+    for (std::size_t k = 0; k < pending_.size(); ++k) {
+      const Sample& p = pending_[k];
       const State ref = exact_.at(grid_.t(p.l));
       if (p.l == grid_.steps) end_ = ref;
       e_.sup_u = std::fmax(e_.sup_u, std::fabs(p.s.u - ref.u));
       add_l1_v(std::fabs(p.s.v - ref.v));
+      if (k < pending_internal_.size()) {
+        const auto z = p.l == 0 ? pending_internal_[k] : exact_.internal_at(grid_.t(p.l));
+        for (std::size_t i = 0; i < internal_; ++i)
+          e_.sup_internal = std::fmax(e_.sup_internal, std::fabs(pending_internal_[k][i] - z[i]));
+      }
     }
     pending_.clear();
+    pending_internal_.clear();
     reference_seconds_ += seconds_since(start);
   }
 
@@ -137,6 +164,7 @@ class ErrorObserver {
   }
 
   ReferenceSolution exact_;
+  std::size_t internal_;  // the model's internal variables
   Model model_;
   Grid grid_;
   State previous_;
@@ -145,6 +173,7 @@ class ErrorObserver {
   bool seen_contact_ = false;
   ErrorNorms e_;
   std::vector<Sample> pending_;
+  std::vector<std::array<double, kMaxInternal>> pending_internal_;
   double reference_seconds_ = 0;
 };
 

@@ -3,6 +3,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace impact {
 
@@ -29,8 +30,14 @@ EventDriven::EventDriven(const Model& model, double h, const EventDrivenParams& 
 }
 
 void EventDriven::initialize(const State& s, std::int64_t l) {
+  start(s, l, with_internal(model_, s).z);
+}
+
+void EventDriven::start(const State& s, std::int64_t l, const std::array<double, kMaxInternal>& z) {
   l0_ = l;
-  track_.emplace(OdeLaw(model_, settings_), model_, s, static_cast<double>(l) * h_);
+  OdeLaw law(model_, settings_);
+  law.set_internal(z);
+  track_.emplace(std::move(law), model_, s, static_cast<double>(l) * h_);
   track_->set_event_sink(sink_);
 }
 

@@ -5,6 +5,7 @@
 // reference for an expression force, as exact is for a constant or harmonic one.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -45,6 +46,12 @@ class EventDriven {
   // the contact search that stalled, with what to do; for simulate()'s message.
   std::string failure_reason() const;
 
+ protected:
+  // initialize() with the internal variables' values at t_l (EventDrivenInternal).
+  void start(const State& s, std::int64_t l, const std::array<double, kMaxInternal>& z);
+  const OdeLaw& law() const { return track_->law(); }
+  double h() const { return h_; }
+
  private:
   Model model_;
   double h_;
@@ -53,6 +60,29 @@ class EventDriven {
   std::int64_t l0_ = 0, event_limit_ = 0;
   std::optional<EventTrackOf<OdeLaw>> track_;
   EventSink sink_;
+};
+
+// event_driven with the model's internal variables (model.hpp): z integrated with the flight and
+// on the floor (ode_flight.hpp), sampled with u and v.
+class EventDrivenInternal : public EventDriven {
+ public:
+  using StateType = StateWithInternal;
+  EventDrivenInternal(const Model& model, double h, const EventDrivenParams& params)
+      : EventDriven(model, h, params), initial_(with_internal(model, {}).z) {}
+
+  // The full initial state of a run from the particle's: z at the model's initial values.
+  StateWithInternal initial_state(const State& s) const { return {s, initial_}; }
+  void initialize(const StateWithInternal& s, std::int64_t l) { start(s, l, s.z); }
+  StepInfo do_step(StateWithInternal& s, std::int64_t l) {
+    State particle = s;
+    const StepInfo info = EventDriven::do_step(particle, l);
+    static_cast<State&>(s) = particle;
+    s.z = law().internal_at(static_cast<double>(l + 1) * h());
+    return info;
+  }
+
+ private:
+  std::array<double, kMaxInternal> initial_;
 };
 
 }  // namespace impact

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <variant>
 
 #include "impact/contact.hpp"
@@ -17,7 +18,26 @@ bool attach_event_sink(AnyStepper& stepper, const EventSink& sink) {
 EventLog::EventLog(const Model& model, double h, EventSink sink)
     : force_(model), h_(h), sink_(std::move(sink)) {}
 
+void EventLog::operator()(std::int64_t l, const StateWithInternal& s, const StepInfo& info) {
+  z_after_ = s.z;
+  force_.set_internal(z_before_);  // a force of the state reads z at the step's start
+  (*this)(l, static_cast<const State&>(s), info);
+  z_before_ = s.z;
+}
+
+void EventLog::emit(Event event) const {
+  const std::size_t n = force_.model().internal.size();
+  if (n > 0) {
+    const double start = static_cast<double>(l_ - 1) * h_;
+    const double w = std::clamp((event.t - start) / h_, 0.0, 1.0);
+    for (std::size_t i = 0; i < n; ++i)
+      event.internal[i] = z_before_[i] + w * (z_after_[i] - z_before_[i]);
+  }
+  sink_(event);
+}
+
 void EventLog::operator()(std::int64_t l, const State& s, const StepInfo& info) {
+  l_ = l;
   if (l > 0) {
     constexpr double kEps = std::numeric_limits<double>::epsilon();
     const bool contact =
@@ -26,7 +46,7 @@ void EventLog::operator()(std::int64_t l, const State& s, const StepInfo& info) 
     if (contact) {
       contact_step(l - 1, s, force_.step_mean(static_cast<double>(l - 1) * h_, h_, before_));
     } else {
-      if (phase_ == Phase::stuck) sink_({static_cast<double>(l - 1) * h_, EventKind::lift, 0, 0});
+      if (phase_ == Phase::stuck) emit({static_cast<double>(l - 1) * h_, EventKind::lift, 0, 0});
       phase_ = Phase::free;
     }
   }
@@ -38,7 +58,7 @@ void EventLog::contact_step(std::int64_t l, const State& after, double mean_forc
   const double t = static_cast<double>(l) * h_, rest = h_ * std::fabs(mean_force);
   if (phase_ == Phase::pending_stick) {
     if (std::fabs(after.v) <= rest) {
-      sink_({stick_t_, EventKind::stick, 0, 0});
+      emit({stick_t_, EventKind::stick, 0, 0});
       phase_ = Phase::stuck;
       return;
     }
@@ -46,7 +66,7 @@ void EventLog::contact_step(std::int64_t l, const State& after, double mean_forc
   }
   if (phase_ == Phase::free) {
     const double s = floor_time(mean_force), v = before_.v + mean_force * s;
-    if (v < 0 && std::fabs(before_.v) > rest) sink_({t + s, EventKind::impact, v, after.v});
+    if (v < 0 && std::fabs(before_.v) > rest) emit({t + s, EventKind::impact, v, after.v});
     phase_ = Phase::contact;
   }
   if (phase_ == Phase::contact && std::fabs(after.v) <= rest) {
@@ -67,12 +87,15 @@ double EventLog::floor_time(double mean_force) const {
   return std::isfinite(root) ? std::clamp(root, 0.0, h_) : h_;
 }
 
-void write_event_header(std::FILE* out) {
-  std::fputs("t,kind,v_before,v_after\n", out);
+void write_event_header(std::FILE* out, const Model& model) {
+  std::string line = "t,kind,v_before,v_after";
+  for (const InternalVariable& z : model.internal) line += "," + z.name;
+  line += "\n";
+  std::fputs(line.c_str(), out);
 }
 
-std::size_t write_event(std::FILE* out, const Event& event) {
-  char buf[128];  // three fields of at most 24 characters, a kind and the separators
+std::size_t write_event(std::FILE* out, const Event& event, std::size_t internal) {
+  char buf[256];  // 3 + kMaxInternal fields of at most 24 characters, a kind and the separators
   char* p = format_double(buf, buf + sizeof buf, event.t);
   *p++ = ',';
   const std::string_view kind = event_name(event.kind);
@@ -81,6 +104,10 @@ std::size_t write_event(std::FILE* out, const Event& event) {
   p = format_double(p, buf + sizeof buf, event.v_before);
   *p++ = ',';
   p = format_double(p, buf + sizeof buf, event.v_after);
+  for (std::size_t i = 0; i < internal && i < kMaxInternal; ++i) {
+    *p++ = ',';
+    p = format_double(p, buf + sizeof buf, event.internal[i]);
+  }
   *p++ = '\n';
   const auto bytes = static_cast<std::size_t>(p - buf);
   std::fwrite(buf, 1, bytes, out);

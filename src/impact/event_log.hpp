@@ -17,6 +17,7 @@
 //  - a lift is the first free step after a stick, dated t_l, the last time the particle was held.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -49,8 +50,12 @@ class EventLog {
 
   // The state at t_l and the StepInfo of the step that ended there (l = 0: the initial state).
   void operator()(std::int64_t l, const State& s, const StepInfo& info);
+  // The same with internal variables: an event inside step l - 1 carries them interpolated
+  // linearly between t_{l-1} and t_l at its time (first order, as the steppers that follow them).
+  void operator()(std::int64_t l, const StateWithInternal& s, const StepInfo& info);
 
  private:
+  void emit(Event event) const;
   enum class Phase { free, contact, pending_stick, stuck };
   void contact_step(std::int64_t l, const State& after, double mean_force);
   double floor_time(double mean_force) const;
@@ -61,11 +66,14 @@ class EventLog {
   Phase phase_ = Phase::free;
   State before_;  // the state at t_{l-1}
   double stick_t_ = 0.0;
+  std::int64_t l_ = 0;                                       // the step's end, t_l
+  std::array<double, kMaxInternal> z_before_{}, z_after_{};  // at t_{l-1} and t_l
 };
 
-// The CSV of `impact run --events`: the header t,kind,v_before,v_after, and one row per event with
-// numbers in round-trip precision (17 significant digits). write_event returns the row's bytes.
-void write_event_header(std::FILE* out);
-std::size_t write_event(std::FILE* out, const Event& event);
+// The CSV of `impact run --events`: the header t,kind,v_before,v_after (then the model's internal
+// variables by name), and one row per event with numbers in round-trip precision (17 significant
+// digits), the first `internal` internal variables last. write_event returns the row's bytes.
+void write_event_header(std::FILE* out, const Model& model = {});
+std::size_t write_event(std::FILE* out, const Event& event, std::size_t internal = 0);
 
 }  // namespace impact

@@ -164,7 +164,12 @@ EventTrackOf<Law>::EventTrackOf(Law law, const Model& model, const State& initia
 template <class Law>
 void EventTrackOf<Law>::emit(double t, EventKind kind, double v_before, double v_after) {
   if (events_++ == 0) first_event_ = t;
-  if (sink_) sink_(Event{t, kind, v_before, v_after});
+  if (!sink_) return;
+  Event event{t, kind, v_before, v_after};
+  // A law that follows internal variables gives their values at the event (ode_flight.hpp).
+  if constexpr (requires(const Law& law) { law.internal_at(t); })
+    event.internal = law_.internal_at(t);
+  sink_(event);
 }
 
 template <class Law>

@@ -3,8 +3,11 @@
 // contact step (N^l > 0) after a free step.
 #pragma once
 
+#include <array>
 #include <functional>
 #include <string_view>
+
+#include "impact/model.hpp"
 
 namespace impact {
 
@@ -24,10 +27,12 @@ inline std::string_view event_name(EventKind kind) {
 
 // v_before and v_after are the velocities just before and just after the event (equal for stick
 // and lift, 0 there).
+// internal: the model's internal variables at the event (model.hpp; zero without them).
 struct Event {
   double t = 0.0;
   EventKind kind = EventKind::impact;
   double v_before = 0.0, v_after = 0.0;
+  std::array<double, kMaxInternal> internal{};
 };
 
 // Where a solver that knows its events exactly reports them, in increasing t.

@@ -2,6 +2,7 @@
 
 #include <muParser.h>
 
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -10,6 +11,7 @@
 #include <string_view>
 
 #include "impact/harmonic_series.hpp"
+#include "impact/internal.hpp"
 #include "impact/step_quadrature.hpp"
 
 namespace impact {
@@ -63,25 +65,22 @@ std::string number_at(const std::string& text, std::size_t position) {
   return text.substr(position, end - position);
 }
 
-// The variables of an expression, bound by address: the time and the state.
-void define_variables(mu::Parser& parser, double& t, double& u, double& v) {
-  parser.DefineVar("t", &t);
-  parser.DefineVar("u", &u);
-  parser.DefineVar("v", &v);
-  parser.DefineConst("pi", std::numbers::pi);
-}
-
-// After the first Eval, which parses the expression and records the variables it uses.
-bool reads_state(const mu::Parser& parser) {
+// After the first Eval, which parses the expression and records the variables it uses: u, v or
+// an internal variable.
+bool reads_state(const mu::Parser& parser, const Model& model) {
   const auto& used = parser.GetUsedVar();
-  return used.count("u") > 0 || used.count("v") > 0;
+  if (used.count("u") > 0 || used.count("v") > 0) return true;
+  for (const InternalVariable& z : model.internal)
+    if (used.count(z.name) > 0) return true;
+  return false;
 }
 
 }  // namespace
 
-// The parser binds t, u and v by address, so each ForceFunction owns its parser and its variables.
+// The parser binds t, u, v and the internal variables by address, so each ForceFunction owns its
+// parser and its variables.
 struct ForceFunction::Expression {
-  explicit Expression(const std::string& expression) : text(expression) {
+  Expression(const std::string& expression, const Model& model) : text(expression) {
     if (text.size() > kMaxExpressionLength)
       throw std::invalid_argument("the expression has " + std::to_string(text.size()) +
                                   " characters; at most " + std::to_string(kMaxExpressionLength) +
@@ -90,11 +89,14 @@ struct ForceFunction::Expression {
       throw std::invalid_argument("the expression is empty; give a function of t (and u, v)");
     refuse_assignment(text);
     try {
-      define_variables(parser, t, u, v);
+      define_variables(parser, t, u, v, model, z.data());
       parser.SetExpr(text);
       t = u = v = 0.0;
+      for (std::size_t i = 0; i < model.internal.size() && i < kMaxInternal; ++i)
+        z[i] = model.internal[i].initial;
       const double f0 = parser.Eval();
-      state = reads_state(parser);  // muparser records the variables as the first Eval parses
+      state =
+          reads_state(parser, model);  // muparser records the variables as the first Eval parses
       if (const int values = parser.GetNumResults(); values > 1)
         throw std::invalid_argument("the expression has " + std::to_string(values) +
                                     " values separated by commas, of which muparser would keep "
@@ -113,9 +115,11 @@ struct ForceFunction::Expression {
       if (e.GetCode() == mu::ecUNASSIGNABLE_TOKEN)
         throw std::invalid_argument("the expression uses \"" + e.GetToken() + "\"" + at +
                                     ", which is no variable or function muparser knows (the "
-                                    "variables are t, u and v; pi is defined)");
+                                    "variables are " +
+                                    variables_named(model) + "; pi is defined)");
       throw std::invalid_argument("the expression does not parse" + at + ": " + e.GetMsg() +
-                                  " (the variables are t, u and v; pi is defined)");
+                                  " (the variables are " + variables_named(model) +
+                                  "; pi is defined)");
     }
   }
   double operator()(double at) const {
@@ -144,20 +148,24 @@ struct ForceFunction::Expression {
 
   std::string text;
   mutable double t = 0.0, u = 0.0, v = 0.0;
-  bool state = false;  // the expression reads u or v
+  mutable std::array<double, kMaxInternal> z{};  // the internal variables, set_internal()
+  bool state = false;  // the expression reads u, v or an internal variable
   mu::Parser parser;
 };
 
 ForceFunction::ForceFunction(const Model& model) : model_(model), harmonic_(model.harmonic) {
   if (!model.expression.empty()) {
-    expression_ = std::make_unique<Expression>(model.expression);
+    expression_ = std::make_unique<Expression>(model.expression, model);
     state_dependent_ = expression_->state;
   }
 }
 
 ForceFunction::ForceFunction(const ForceFunction& other)
     : model_(other.model_), harmonic_(other.harmonic_), state_dependent_(other.state_dependent_) {
-  if (other.expression_) expression_ = std::make_unique<Expression>(other.expression_->text);
+  if (other.expression_) {
+    expression_ = std::make_unique<Expression>(other.expression_->text, model_);
+    expression_->z = other.expression_->z;
+  }
 }
 
 ForceFunction& ForceFunction::operator=(const ForceFunction& other) {
@@ -252,15 +260,20 @@ State ForceFunction::flight(const State& s, double t0, double t1) const {
   return next;
 }
 
+void ForceFunction::set_internal(const std::array<double, kMaxInternal>& z) const {
+  if (expression_) expression_->z = z;
+}
+
 bool state_force(const Model& model) {
   if (model.expression.empty()) return false;
   try {
     mu::Parser parser;
     double t = 0, u = 0, v = 0;
-    define_variables(parser, t, u, v);
+    std::array<double, kMaxInternal> z{};
+    define_variables(parser, t, u, v, model, z.data());
     parser.SetExpr(model.expression);
     parser.Eval();
-    return reads_state(parser);
+    return reads_state(parser, model);
   } catch (const mu::Parser::exception_type&) {
     return false;
   }

@@ -9,8 +9,14 @@
 // frozen at the step's start, integral(t0, t1, s), the explicit reading of the discrete force of
 // the schemes (scheme_flight.hpp). The forms without a state refuse it (std::logic_error), so that
 // no solver reads a force of the state as one of t alone.
+//
+// Internal variables (model.hpp). An expression may also read the model's internal variables by
+// their names; that too makes it a force of the state. Their values are the ForceFunction's own,
+// set by the stepper that follows them (set_internal) before it evaluates f: a ForceFunction
+// belongs to one solver, as its parser does.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <string>
@@ -36,8 +42,10 @@ class ForceFunction {
 
   bool constant() const { return !harmonic_ && !expression_; }
   bool has_expression() const { return expression_ != nullptr; }
-  // Whether the expression reads u or v: a force of the state.
+  // Whether the expression reads u, v or an internal variable: a force of the state.
   bool state_dependent() const { return state_dependent_; }
+  // The internal variables the expression reads from now on (z_1..z_m of the model, the rest 0).
+  void set_internal(const std::array<double, kMaxInternal>& z) const;
 
   // f(t). Throws std::runtime_error naming t where an expression is not finite, std::logic_error
   // for a force of the state.
@@ -75,8 +83,8 @@ class ForceFunction {
   bool state_dependent_ = false;
 };
 
-// Whether a model's expression reads u or v (false for none, or for one that does not parse: the
-// scene reader refuses that with its own message).
+// Whether a model's expression reads u, v or an internal variable (false for none, or for one that
+// does not parse: the scene reader refuses that with its own message).
 bool state_force(const Model& model);
 
 }  // namespace impact

@@ -15,6 +15,8 @@
 #include "impact/event_log.hpp"
 #include "impact/exact.hpp"
 #include "impact/fb_newton.hpp"
+#include "impact/internal.hpp"
+#include "impact/internal_stepper.hpp"
 #include "impact/model.hpp"
 #include "impact/moreau_jean.hpp"
 #include "impact/output.hpp"

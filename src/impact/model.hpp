@@ -4,10 +4,12 @@
 // (force.hpp evaluates it).
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace impact {
 
@@ -33,6 +35,21 @@ struct Harmonic {
   }
 };
 
+// An internal variable z of the system, z' = g(t, u, v, z) (a damage, a bond fraction, a memory
+// of the motion): its name, as the force expression, the rates and the output read it, its value
+// at t = 0 and its rate g, a muparser expression of t, u, v and the internal variables. It is
+// continuous across impacts (an impact changes v alone) and goes on evolving at rest.
+struct InternalVariable {
+  std::string name;
+  double initial = 0.0;
+  std::string rate;
+  bool operator==(const InternalVariable&) const = default;
+};
+
+// The most internal variables a model may have: a state carries them in a fixed array, so that
+// a step copies no heap memory.
+inline constexpr std::size_t kMaxInternal = 4;
+
 // The body force of (2-1): f(t) = f + amplitude sin(omega t + phase) + expression(t), each part
 // optional (the scene reader lets a scene give either the harmonic part or an expression).
 struct Model {
@@ -40,12 +57,34 @@ struct Model {
   double f = 0.0;                      // the constant part of the body force (2-1)
   std::optional<double> cor{};         // COR = -v_after / v_before, in [0, 1]
   std::optional<Harmonic> harmonic{};  // the harmonic part of the body force, if any
-  std::string expression{};            // muparser, of t (and u, v) added to it; empty: none
+  std::string expression{};            // muparser, of t (and u, v, z) added to it; empty: none
+  std::vector<InternalVariable> internal{};  // at most kMaxInternal; empty for the paper's model
 };
 
 // f(t) = f: the case of the paper's Section 5 and of every closed form in this package.
 inline bool constant_force(const Model& model) {
   return !model.harmonic && model.expression.empty();
+}
+
+// The particle's state with the model's internal variables z_1..z_m (m = model.internal.size(),
+// the rest of the array zero): the state of a stepper that follows them (StateOf, stepper.hpp).
+// A model without internal variables is stepped with State alone, at no cost.
+struct StateWithInternal : State {
+  std::array<double, kMaxInternal> z{};
+  bool finite() const {
+    for (double x : z)
+      if (!std::isfinite(x)) return false;
+    return std::isfinite(u) && std::isfinite(v);
+  }
+};
+std::string describe(const StateWithInternal& s);
+
+// The initial state of a model's internal variables beside the particle's.
+inline StateWithInternal with_internal(const Model& model, const State& s) {
+  StateWithInternal full{s, {}};
+  for (std::size_t i = 0; i < model.internal.size() && i < kMaxInternal; ++i)
+    full.z[i] = model.internal[i].initial;
+  return full;
 }
 
 // Energy (3-1)/(4-5): E = v^2/2 - f u, for a constant force.

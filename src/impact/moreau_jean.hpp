@@ -84,6 +84,11 @@ class BasicMoreauJean {
   std::int64_t repeat_period() const requires(!TimeDependent) { return repeats_.period(); }
   void skip_steps(std::int64_t n) requires(!TimeDependent) { repeats_.skip(n); }
 
+  // The internal variables at t_l that the next step's force of the state reads (internal.hpp).
+  void set_internal(const std::array<double, kMaxInternal>& z) const requires TimeDependent {
+    force_.set_internal(z);
+  }
+
   StepInfo do_step(State& s, std::int64_t l) {
     StepInfo info;
     if constexpr (TimeDependent) {

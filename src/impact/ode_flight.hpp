@@ -42,11 +42,19 @@
 // box the bounces stay in, u in [phi, phi + V^2 / g], v in [-V, V], at each time: for a force
 // affine in u and v these are its extremes over the box.
 //
+// Internal variables (model.hpp): the flight is y = (u - phi, v, z) with z' = g(t, u, v, z), the
+// same rk8pd steps and dense output; z is continuous across an impact. From the time a contact is
+// found the particle is on the floor, where f and the rates are read at (phi, 0, z(t)) with z(t)
+// that of FloorInternal (internal_floor.hpp), until a flight starts again; internal_at(t) is the
+// z of whichever holds at t. The chatter window's force samples take z on the floor too (not
+// certified: z moves by at most W sup |g| inside the window, which its bound does not see).
+//
 // The end of the run. f is evaluated on [t0, end] only (OdeSettings::end; a force such as
 // sqrt(2 - t) is defined up to T = 2 and no further): the ODE steps, the lift-off scan and the
 // force's rate stop there, and a chatter window that reaches past it is not certified.
 #pragma once
 
+#include <array>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -54,6 +62,8 @@
 
 #include "impact/flight_search.hpp"
 #include "impact/force.hpp"
+#include "impact/internal.hpp"
+#include "impact/internal_floor.hpp"
 #include "impact/model.hpp"
 
 namespace impact {
@@ -88,10 +98,20 @@ class OdeLaw {
   // The ODE steps the run may take in all (event_driven sets it before each grid step).
   void set_ode_step_limit(long limit) { ode_step_limit_ = limit; }
 
-  // f on the floor at rest, f(t, phi, 0): f(t) for a force of t alone.
-  double force(double t) const { return force_->at(t, rest_); }
-  // f at the gap and velocity y = (u - phi, v).
-  double force_on(double t, const State& y) const { return force_->at(t, {phi_ + y.u, y.v}); }
+  // f on the floor at rest, f(t, phi, 0) (and z on the floor): f(t) for a force of t alone.
+  double force(double t) const {
+    if (internal_count_ > 0) force_->set_internal(floor_internal(t));
+    return force_->at(t, rest_);
+  }
+  // f at the gap and velocity y = (u - phi, v) and the internal variables z.
+  double force_on(double t, const State& y, const std::array<double, kMaxInternal>& z) const {
+    if (internal_count_ > 0) force_->set_internal(z);
+    return force_->at(t, {phi_ + y.u, y.v});
+  }
+  // The internal variables the next start() begins the flight with (the run's initial values).
+  void set_internal(const std::array<double, kMaxInternal>& z) { z_a_ = z_b_ = z; }
+  // z at t, in flight (t in the current ODE step) or on the floor (see above).
+  std::array<double, kMaxInternal> internal_at(double t) const;
   double rate(double t) const;
   Lift lift_after(double t) const;
   double rest_impulse(double a, double b) const;
@@ -104,18 +124,28 @@ class OdeLaw {
  private:
   struct Gsl;
   void take_step();
+  // The state and internal variables at t in the current ODE step.
+  void dense(double t, State& y, std::array<double, kMaxInternal>& z) const;
+  std::array<double, kMaxInternal> floor_internal(double t) const;
+  // A contact was found at t: the particle is on the floor from there (internal variables).
+  void reach_floor(double t);
   std::optional<Contact> at_end();
   std::optional<detail::Bracket> hidden_rise(double a, double fa, double b, double fb,
                                              int depth) const;
   double first_upward(double a, double fa, double b, int depth) const;
 
   std::unique_ptr<ForceFunction> force_;  // on the heap: the GSL system points to it
+  std::unique_ptr<InternalRates> rates_;  // the internal variables' rates, if any; likewise
   double phi_;
   State rest_;  // (phi, 0): the state of a particle at rest on the floor
   OdeSettings settings_;
   std::unique_ptr<Gsl> gsl_;
   double t_a_ = 0, t_b_ = 0;
   State y_a_, y_b_;
+  std::array<double, kMaxInternal> z_a_{}, z_b_{};  // the internal variables at t_a_ and t_b_
+  std::size_t internal_count_ = 0;
+  std::optional<FloorInternal> floor_;  // with internal variables
+  bool on_floor_ = false;               // z is floor_'s from its origin on
   double bound_ = 0, certified_ = 0, checked_ = 0;
   bool departing_ = false, at_crossing_ = false;
   long ode_steps_ = 0, ode_step_limit_ = std::numeric_limits<long>::max();

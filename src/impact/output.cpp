@@ -4,14 +4,16 @@
 
 namespace impact {
 
-CsvWriter::CsvWriter(std::FILE* out, std::vector<Channel> channels)
-    : out_(out), channels_(std::move(channels)) {}
+CsvWriter::CsvWriter(std::FILE* out, std::vector<Channel> channels, const Model& model)
+    : out_(out), channels_(std::move(channels)) {
+  for (Channel c : channels_) names_.emplace_back(channel_name(c, model));
+}
 
 void CsvWriter::header() {
   std::string line = "t";
-  for (Channel c : channels_) {
+  for (const std::string& name : names_) {
     line += ',';
-    line += channel_name(c);
+    line += name;
   }
   line += "\n";
   std::fputs(line.c_str(), out_);
@@ -19,7 +21,7 @@ void CsvWriter::header() {
 
 void CsvWriter::row(double t, const OutputRow& row) {
   const State& s = row.state;
-  // At most 1 + 5 fields of 24 characters (-1.2345678901234567e-308) and their separators.
+  // At most 1 + 9 fields of 24 characters (-1.2345678901234567e-308) and their separators.
   char buf[256];
   char* p = format_double(buf, buf + sizeof buf, t);
   for (Channel c : channels_) {
@@ -39,6 +41,12 @@ void CsvWriter::row(double t, const OutputRow& row) {
         break;
       case Channel::iterations:
         p = std::to_chars(p, buf + sizeof buf, row.iterations).ptr;
+        break;
+      case Channel::z1:
+      case Channel::z2:
+      case Channel::z3:
+      case Channel::z4:
+        p = format_double(p, buf + sizeof buf, row.internal[*internal_index(c)]);
         break;
     }
   }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdio>
+#include <string>
 #include <vector>
 
 #include "impact/atomic_file.hpp"
@@ -15,7 +16,8 @@ namespace impact {
 // Writes the header `t,<channels>` and one row per written step.
 class CsvWriter {
  public:
-  CsvWriter(std::FILE* out, std::vector<Channel> channels);
+  // model: the names of its internal variables' channels.
+  CsvWriter(std::FILE* out, std::vector<Channel> channels, const Model& model = {});
   void header();
   // The row at t = row.l h (row_stream.hpp), its E as run_scene() filled it in.
   void row(double t, const OutputRow& row);
@@ -23,6 +25,7 @@ class CsvWriter {
  private:
   std::FILE* out_;
   std::vector<Channel> channels_;
+  std::vector<std::string> names_;  // the header's names of the channels
 };
 
 }  // namespace impact

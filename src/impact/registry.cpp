@@ -18,6 +18,7 @@ const MethodInfo kMethods[] = {
              .harmonic_force = true,
              .time_expression = true,
              .state_force = true,
+             .internal_variables = true,
              .energy_bound = true}},
     {.name = "fb_newton",
      .summary = "(4-1)-(4-3) as the smoothed Fischer-Burmeister equation (5-3), Newton",
@@ -33,7 +34,8 @@ const MethodInfo kMethods[] = {
      .can = {.restitution = true,
              .harmonic_force = true,
              .time_expression = true,
-             .state_force = true}},
+             .state_force = true,
+             .internal_variables = true}},
     // Compliance has no impact law to apply a COR to: it refuses one rather than run elastic.
     {.name = "penalty",
      .summary = "normal compliance N = c_N max(phi - u, 0), GSL odeiv2",
@@ -54,6 +56,7 @@ const MethodInfo kMethods[] = {
              .harmonic_force = true,
              .time_expression = true,
              .state_force = true,
+             .internal_variables = true,
              .reference = true,
              .exact_events = true}},
     {.name = "direct_located",
@@ -91,7 +94,8 @@ bool honours(const MethodInfo& method, const Model& model) {
   const bool harmonic = model.harmonic && model.harmonic->amplitude != 0.0;
   return (!model.cor || method.can.restitution) && (!harmonic || method.can.harmonic_force) &&
          (model.expression.empty() || method.can.time_expression) &&
-         (method.can.state_force || !state_force(model));
+         (method.can.state_force || !state_force(model)) &&
+         (method.can.internal_variables || model.internal.empty());
 }
 
 const MethodInfo& reference_for(const Model& model) {
@@ -108,6 +112,9 @@ AnyStepper make_stepper(const Model& model, double h, const MethodParams& params
   if (!method.can.state_force && state_force(model))
     throw std::invalid_argument("method '" + std::string(method.name) +
                                 "' takes a force of t only: force.expression reads u or v");
+  if (!method.can.internal_variables && !model.internal.empty())
+    throw std::invalid_argument("method '" + std::string(method.name) +
+                                "' does not follow internal variables: [[internal]] is given");
   if ((std::holds_alternative<DirectParams>(params) ||
        std::holds_alternative<FbNewtonParams>(params)) &&
       !scheme_step_representable(h))
@@ -118,7 +125,14 @@ AnyStepper make_stepper(const Model& model, double h, const MethodParams& params
       [&](const auto& p) -> AnyStepper {
         using Params = std::decay_t<decltype(p)>;
         if constexpr (std::is_same_v<Params, DirectParams>) {
-          if (p.free_flight == FreeFlightForm::paper) return DirectAsPrinted(model, h, p);
+          if (p.free_flight == FreeFlightForm::paper) {
+            if (!model.internal.empty())
+              throw std::invalid_argument(
+                  "method 'direct' with free_flight = \"paper\" does not follow internal "
+                  "variables: [[internal]] is given (the closed form does)");
+            return DirectAsPrinted(model, h, p);
+          }
+          if (!model.internal.empty()) return DirectInternal(model, h, p);
           switch (force_kind(model)) {
             case ForceKind::constant:
               return Direct(model, h, p);
@@ -131,12 +145,16 @@ AnyStepper make_stepper(const Model& model, double h, const MethodParams& params
         }
         if constexpr (std::is_same_v<Params, FbNewtonParams>) return FbNewton(model, h, p);
         if constexpr (std::is_same_v<Params, MoreauJeanParams>) {
+          if (!model.internal.empty()) return MoreauJeanInternal(model, h, p);
           if (constant_force(model)) return MoreauJean(model, h, p);
           return MoreauJeanTimeDependent(model, h, p);
         }
         if constexpr (std::is_same_v<Params, PenaltyParams>) return Penalty(model, h, p);
         if constexpr (std::is_same_v<Params, ExactParams>) return ExactStepper(model, h, p);
-        if constexpr (std::is_same_v<Params, EventDrivenParams>) return EventDriven(model, h, p);
+        if constexpr (std::is_same_v<Params, EventDrivenParams>) {
+          if (!model.internal.empty()) return EventDrivenInternal(model, h, p);
+          return EventDriven(model, h, p);
+        }
         if constexpr (std::is_same_v<Params, DirectLocatedParams>)
           return DirectLocated(model, h, p);
       },

@@ -13,6 +13,7 @@
 #include "impact/event_driven.hpp"
 #include "impact/exact.hpp"
 #include "impact/fb_newton.hpp"
+#include "impact/internal_stepper.hpp"
 #include "impact/model.hpp"
 #include "impact/moreau_jean.hpp"
 #include "impact/penalty.hpp"
@@ -24,12 +25,19 @@ namespace impact {
 using MethodParams = std::variant<DirectParams, FbNewtonParams, MoreauJeanParams, PenaltyParams,
                                   ExactParams, EventDrivenParams, DirectLocatedParams>;
 
+// The methods that follow a model's internal variables (internal_stepper.hpp, event_driven.hpp):
+// their state is StateWithInternal.
+using DirectInternal = WithInternal<DirectTimeDependent>;
+using MoreauJeanInternal = WithInternal<MoreauJeanTimeDependent>;
+
 // One stepper type per method, and more for some: DirectHarmonic, DirectTimeDependent and
 // MoreauJeanTimeDependent are `direct` and `moreau_jean` with a time-dependent force,
-// DirectAsPrinted `direct` with (5-1) as printed (direct.hpp says why more than one type).
+// DirectAsPrinted `direct` with (5-1) as printed (direct.hpp says why more than one type), and the
+// *Internal ones the methods with the model's internal variables.
 using AnyStepper =
     std::variant<Direct, FbNewton, MoreauJean, Penalty, ExactStepper, EventDriven, DirectHarmonic,
-                 DirectTimeDependent, MoreauJeanTimeDependent, DirectAsPrinted, DirectLocated>;
+                 DirectTimeDependent, MoreauJeanTimeDependent, DirectAsPrinted, DirectLocated,
+                 DirectInternal, MoreauJeanInternal, EventDrivenInternal>;
 static_assert([]<class... S>(std::variant<S...>*) { return (Stepper<S> && ...); }(
                   static_cast<AnyStepper*>(nullptr)),
               "every method's stepper has the interface of stepper.hpp");
@@ -43,6 +51,7 @@ struct Capabilities {
   bool harmonic_force = false;      // force.amplitude/omega/phase
   bool time_expression = false;     // force.expression (a function of t)
   bool state_force = false;         // force.expression reads u or v: f(t, u, v)
+  bool internal_variables = false;  // [[internal]]: z' = g(t, u, v, z), read by the force
   bool iterations_channel = false;  // output.channels "iterations": Newton iterations, ODE steps
   bool reference = false;     // samples an exact solution (--against's reference, tight tolerances)
   bool energy_bound = false;  // the discrete energy (3-1) never rises (Lemma 1, (4-5), stability)
@@ -60,7 +69,7 @@ std::span<const MethodInfo> methods();
 // The names of the methods that have a capability, for messages ("direct, fb_newton or exact").
 std::vector<std::string_view> methods_with(bool Capabilities::*capability);
 // Whether `method` honours what `model` states (a COR, a harmonic part, an expression, one that
-// reads the state).
+// reads the state, internal variables).
 bool honours(const MethodInfo& method, const Model& model);
 // The reference for a model: the first method with `reference` that honours it (exact for a
 // constant or harmonic force, event_driven for an expression, of t or of the state).

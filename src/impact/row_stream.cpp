@@ -19,9 +19,19 @@ RowStream::RowStream(std::int64_t every, const Grid& grid, RowSink row, std::int
 
 bool RowStream::at(std::int64_t l, const State& s, const StepInfo& info, double force_sum,
                    std::int64_t iteration_sum) {
+  return at(l, s, {}, info, force_sum, iteration_sum);
+}
+
+bool RowStream::at(std::int64_t l, const StateWithInternal& s, const StepInfo& info,
+                   double force_sum, std::int64_t iteration_sum) {
+  return at(l, s, s.z, info, force_sum, iteration_sum);
+}
+
+bool RowStream::at(std::int64_t l, const State& s, const std::array<double, kMaxInternal>& internal,
+                   const StepInfo& info, double force_sum, std::int64_t iteration_sum) {
   bool wrote = false;
   if (l == rows_.next()) {
-    OutputRow row{l, s, 0.0, iteration_sum};
+    OutputRow row{l, s, 0.0, iteration_sum, 0.0, internal};
     // One step: N^{l-1} as the step gave it (bit for bit, -0 included); more: their mean.
     const std::int64_t steps = l - last_row_;
     row.contact_force = steps == 1  ? info.contact_force
@@ -41,6 +51,10 @@ bool RowStream::at(std::int64_t l, const State& s, const StepInfo& info, double 
 }
 
 void watch_step(const StepWatch& watch, std::int64_t l, State s, StepInfo info) {
+  watch(l, StateWithInternal{s, {}}, info);
+}
+
+void watch_step(const StepWatch& watch, std::int64_t l, StateWithInternal s, StepInfo info) {
   watch(l, s, info);
 }
 

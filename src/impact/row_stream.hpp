@@ -10,6 +10,7 @@
 // at the next step where one of them is due.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 
@@ -25,6 +26,7 @@ struct OutputRow {
   double contact_force = 0.0;   // the mean of N^j over those steps (0 at l = 0)
   std::int64_t iterations = 0;  // the sum of their iterations
   double energy = 0.0;          // E at t_l where the output asks for it (run_scene.hpp)
+  std::array<double, kMaxInternal> internal{};  // the internal variables at t_l (model.hpp)
 };
 
 // Which steps get a row: l = 0, every, 2 every, ... and always the last step.
@@ -58,8 +60,14 @@ class RowStream {
   // returns whether a row was written (the sums then start again from 0).
   bool at(std::int64_t l, const State& s, const StepInfo& info, double force_sum,
           std::int64_t iteration_sum);
+  // The same for a state with internal variables: the row carries them.
+  bool at(std::int64_t l, const StateWithInternal& s, const StepInfo& info, double force_sum,
+          std::int64_t iteration_sum);
 
  private:
+  bool at(std::int64_t l, const State& s, const std::array<double, kMaxInternal>& internal,
+          const StepInfo& info, double force_sum, std::int64_t iteration_sum);
+
   RowSchedule rows_;
   RowSink row_;
   Check check_;
@@ -75,7 +83,9 @@ class RowTap {
 
   explicit RowTap(RowStream& stream) : stream_(&stream), next_(stream.next()) {}
 
-  void operator()(std::int64_t l, const State& s, const StepInfo& info) {
+  // St: State, or StateWithInternal.
+  template <class St>
+  void operator()(std::int64_t l, const St& s, const StepInfo& info) {
     if constexpr (kSums) {
       force_sum_ += info.contact_force;
       iteration_sum_ += info.iterations;
@@ -91,7 +101,8 @@ class RowTap {
 
  private:
   // Out of line and on copies, so that nothing on the common path takes the loop state's address.
-  [[gnu::noinline]] static bool due(RowStream* stream, std::int64_t l, State s, StepInfo info,
+  template <class St>
+  [[gnu::noinline]] static bool due(RowStream* stream, std::int64_t l, St s, StepInfo info,
                                     double force_sum, std::int64_t iteration_sum) {
     return stream->at(l, s, info, force_sum, iteration_sum);
   }
@@ -104,10 +115,14 @@ class RowTap {
 
 // Runs `stepper` over the grid, streaming its rows to `stream`; `watch`, when given, sees every
 // step first (the errors against a reference, the work of f(t), a time-stepper's events), out of
-// line. `sums`: the rows carry N or the iterations.
-using StepWatch = std::function<void(std::int64_t l, const State& s, const StepInfo& info)>;
+// line. `sums`: the rows carry N or the iterations. A watch sees the internal variables of a
+// stepper that follows them (zero for the others); a function of State can be one.
+using StepWatch =
+    std::function<void(std::int64_t l, const StateWithInternal& s, const StepInfo& info)>;
 // watch(l, s, info), out of line on copies.
 [[gnu::noinline]] void watch_step(const StepWatch& watch, std::int64_t l, State s, StepInfo info);
+[[gnu::noinline]] void watch_step(const StepWatch& watch, std::int64_t l, StateWithInternal s,
+                                  StepInfo info);
 
 template <class S>
 RunSummary simulate_rows(S& stepper, const State& initial, const Grid& grid, RowStream& stream,
@@ -116,7 +131,7 @@ RunSummary simulate_rows(S& stepper, const State& initial, const Grid& grid, Row
     RowTap<kSums> tap(stream);
     if (!watch) return simulate(stepper, initial, grid, tap);
     return simulate(stepper, initial, grid,
-                    [&](std::int64_t l, const State& s, const StepInfo& info) {
+                    [&](std::int64_t l, const auto& s, const StepInfo& info) {
                       watch_step(watch, l, s, info);
                       tap(l, s, info);
                     });

@@ -190,6 +190,17 @@ template <Stepper S, class Observer>
   }
 }
 
+// A stepper that follows internal variables (StateOf is StateWithInternal), from the particle's
+// initial state: the internal variables start at the model's initial values (initial_state); its
+// observer sees the full state (an observer of State sees the particle's).
+template <Stepper S, class Observer>
+requires(!std::is_same_v<StateOf<S>, State>) && requires(const S& s, const State& x) {
+  { s.initial_state(x) } -> std::same_as<StateOf<S>>;
+}
+RunSummary simulate(S& stepper, const State& initial, const Grid& grid, Observer&& observe) {
+  return simulate(stepper, stepper.initial_state(initial), grid, observe);
+}
+
 template <class Observer>
 RunSummary simulate(AnyStepper& stepper, const State& initial, const Grid& grid,
                     Observer&& observe) {

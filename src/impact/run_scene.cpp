@@ -34,11 +34,16 @@ RunReport run_scene(const Scene& scene, AnyStepper& stepper, const RunOutputs& o
   const bool summary_inline = outputs.summary && !outputs.rows;
   StepWatch watch;
   if (errors || work || log || outputs.watch || (outputs.summary && !summary_inline))
-    watch = [&](std::int64_t l, const State& s, const StepInfo& info) {
+    watch = [&](std::int64_t l, const StateWithInternal& s, const StepInfo& info) {
       if (errors) (*errors)(l, s, info);
       if (work && l > 0) work->step(l, s);
       if (log) (*log)(l, s, info);
-      if (outputs.summary && !summary_inline) summary(l, s, info);
+      if (outputs.summary && !summary_inline) {
+        if (scene.model.internal.empty())
+          summary(l, static_cast<const State&>(s), info);
+        else
+          summary(l, s, info);
+      }
       if (outputs.watch) outputs.watch(l, s, info);
     };
 
@@ -65,13 +70,13 @@ RunReport run_scene(const Scene& scene, AnyStepper& stepper, const RunOutputs& o
     report.summary = simulate(stepper, scene.initial, scene.grid, summary);
   } else if (summary_inline) {
     report.summary = simulate(stepper, scene.initial, scene.grid,
-                              [&](std::int64_t l, const State& s, const StepInfo& info) {
+                              [&](std::int64_t l, const auto& s, const StepInfo& info) {
                                 summary(l, s, info);
                                 watch_step(watch, l, s, info);
                               });
   } else {
     report.summary = simulate(stepper, scene.initial, scene.grid,
-                              [&](std::int64_t l, const State& s, const StepInfo& info) {
+                              [&](std::int64_t l, const auto& s, const StepInfo& info) {
                                 if (watch) watch_step(watch, l, s, info);
                               });
   }

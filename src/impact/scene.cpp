@@ -18,6 +18,8 @@ AnyStepper make_stepper(const Scene& scene) {
   // A force expression need only be defined up to the scene's end: event_driven looks no further.
   if (auto* event_driven = std::get_if<EventDriven>(&stepper))
     event_driven->set_end(scene.grid.end());
+  if (auto* event_driven = std::get_if<EventDrivenInternal>(&stepper))
+    event_driven->set_end(scene.grid.end());
   return stepper;
 }
 

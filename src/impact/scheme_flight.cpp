@@ -36,6 +36,7 @@ SchemeForce::SchemeForce(const Model& model, double h)
   if (!model.expression.empty()) {
     Model expression_part;
     expression_part.expression = model.expression;
+    expression_part.internal = model.internal;
     expression_ = std::make_unique<ForceFunction>(expression_part);
   }
 }

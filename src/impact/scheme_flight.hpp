@@ -36,6 +36,7 @@
 // the constant a sin(phase) to rounding.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <memory>
@@ -159,6 +160,10 @@ class SchemeForce {
     if (has_phasor_ && phasor_.l() != l) [[unlikely]]
       phasor_.seek(l);
   }
+  // The internal variables a force of the state reads from the next advance() on (force.hpp).
+  void set_internal(const std::array<double, kMaxInternal>& z) const {
+    if (expression_) expression_->set_internal(z);
+  }
   // The harmonic part: whether there is one, whether it is slow (harmonic_series.hpp), a / w and
   // the phasor at the current time.
   bool harmonic() const { return has_phasor_; }
@@ -243,6 +248,8 @@ class SchemeFlight {
   // The state at t_l (gap, v) for the next step(l), where it is not the flight's own (a stepper
   // that solves contact from its own state: DirectAsPrinted).
   void restate(const State& s) { now_ = s; }
+  // The internal variables a force of the state reads from the next step(l) on (force.hpp).
+  void set_internal(const std::array<double, kMaxInternal>& z) const { force_.set_internal(z); }
   // f^l of the last step(l), the step's discrete force: f + I^l / h.
   double step_force() const { return force_.constant() ? f_ : f_ + impulse_ / h_; }
 

@@ -43,6 +43,11 @@ concept Stepper = requires(S& stepper, StateOf<S>& s, const StateOf<S>& cs, std:
   { stepper.do_step(s, l) } -> std::same_as<StepInfo>;
 };
 
+// A stepper of the one particle's state alone (no internal variables, no other body): what an
+// analysis that steps a method by hand, beside another, is written for.
+template <class S>
+concept ParticleStepper = Stepper<S> && std::same_as<StateOf<S>, State>;
+
 // A stepper that knows its events exactly and reports them (exact, event_driven); the others' are
 // read off their steps (event_log.hpp).
 template <class S>

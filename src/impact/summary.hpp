@@ -3,11 +3,13 @@
 // the exact solution are those of error_norms.hpp, from the same run.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <optional>
 #include <span>
 #include <string_view>
+#include <type_traits>
 
 #include "impact/ensemble.hpp"
 #include "impact/error_norms.hpp"
@@ -27,9 +29,10 @@ struct PointSummary {
   std::int64_t impacts = 0;  // contact episodes before rest (all of them without rest)
   // t_l + floor_crossing(u^l, v^l) for the first contact step l; NaN without contact.
   double first_impact_time = std::numeric_limits<double>::quiet_NaN();
-  std::optional<double> rest_time;  // rest_time() of contact.hpp
-  double max_u = 0;                 // max over l of u^l
-  std::int64_t iterations = 0;      // Newton iterations or ODE steps (RunSummary)
+  std::optional<double> rest_time;                    // rest_time() of contact.hpp
+  double max_u = 0;                                   // max over l of u^l
+  std::int64_t iterations = 0;                        // Newton iterations or ODE steps (RunSummary)
+  std::array<double, kMaxInternal> internal_final{};  // the internal variables at T (model.hpp)
 };
 
 PointSummary finish_summary(const SummaryLanes<double>& lanes, const Model& model, const Grid& grid,
@@ -42,17 +45,22 @@ class SummaryObserver {
 
   SummaryObserver(const Model& model, const Grid& grid) : model_(model), grid_(grid) {}
 
-  void operator()(std::int64_t l, const State& s, const StepInfo& info) {
+  // St: State, or StateWithInternal (the summary keeps the internal variables at T).
+  template <class St>
+  void operator()(std::int64_t l, const St& s, const StepInfo& info) {
     if (l == 0)
       start_summary(lanes_, s.u);
     else
       summary_step(lanes_, static_cast<double>(l - 1), model_.phi, previous_.u, previous_.v, s.u,
                    info.contact_force);
     previous_ = s;
+    if constexpr (std::is_same_v<St, StateWithInternal>) internal_ = s.z;
   }
 
   PointSummary result(const RunSummary& run) const {
-    return finish_summary(lanes_, model_, grid_, previous_, run.iterations);
+    PointSummary summary = finish_summary(lanes_, model_, grid_, previous_, run.iterations);
+    summary.internal_final = internal_;
+    return summary;
   }
 
  private:
@@ -60,6 +68,7 @@ class SummaryObserver {
   Grid grid_;
   SummaryLanes<double> lanes_;
   State previous_;
+  std::array<double, kMaxInternal> internal_{};
 };
 
 struct PointOutcome {

@@ -17,6 +17,7 @@
 #include "impact/format.hpp"
 #include "impact/work_energy.hpp"
 #include "scene/force_keys.hpp"
+#include "scene/internal_keys.hpp"
 #include "scene/key_reader.hpp"
 #include "scene/method_keys.hpp"
 #include "scene/overrides.hpp"
@@ -32,24 +33,27 @@ namespace {
 constexpr std::size_t kMaxSceneBytes = std::size_t{1} << 20;
 
 void read_channels(const KeyReader& r, const toml::node& channels, const MethodInfo& method,
-                   Output& output) {
+                   const Model& model, Output& output) {
   const toml::array* list = channels.as_array();
   if (!list || list->empty())
     r.fail_value("output", "channels", channels, "must be a non-empty array of channel names");
   output.channels.clear();
   std::vector<std::string_view> allowed;
-  for (const ChannelInfo& c : impact::channels())
-    if (can_write(method, c.channel)) allowed.push_back(c.name);
+  std::vector<Channel> known;
+  for (const ChannelInfo& c : impact::channels()) known.push_back(c.channel);
+  for (std::size_t i = 0; i < model.internal.size(); ++i) known.push_back(internal_channel(i));
+  for (Channel c : known)
+    if (can_write(method, c)) allowed.push_back(channel_name(c, model));
   for (const toml::node& item : *list) {
     const toml::value<std::string>* s = item.as_string();
     bool ok = false;
     if (s) {
-      for (const ChannelInfo& c : impact::channels()) {
-        if (c.name != s->get() || !can_write(method, c.channel)) continue;
+      for (Channel c : known) {
+        if (channel_name(c, model) != s->get() || !can_write(method, c)) continue;
         for (Channel seen : output.channels)
-          if (seen == c.channel)
+          if (seen == c)
             r.fail_value("output", "channels", item, "is listed twice (at most once each)");
-        output.channels.push_back(c.channel);
+        output.channels.push_back(c);
         ok = true;
       }
     }
@@ -73,6 +77,7 @@ Scene build(const toml::table& root, const Origins& origins) {
   const KeyReader r(root, origins);
   std::vector<std::string_view> tables;
   for (const TableSpec& t : scene_tables()) tables.push_back(t.name);
+  tables.push_back("internal");  // an array of tables (internal_keys.hpp)
   r.only(root, "", tables);
   Scene scene;
   for (const TableSpec& t : scene_tables()) {
@@ -83,10 +88,11 @@ Scene build(const toml::table& root, const Origins& origins) {
       if (spec.table == t.name && spec.set) r.read(*table, spec, scene);
   }
 
+  read_internal(r, root, scene);
   check_force(r, root, scene);
   const MethodInfo& method = method_info(scene.method);
   if (const toml::node* channels = root.at_path("output.channels").node())
-    read_channels(r, *channels, method, scene.output);
+    read_channels(r, *channels, method, scene.model, scene.output);
   const ShowKey as_typed = [&](std::string_view table, std::string_view key) {
     return show(node_at(root, table, key));
   };

@@ -137,6 +137,27 @@ std::string scene_help(std::size_t width) {
     if (c.needs) meaning += " (" + join(methods_with(c.needs)) + " only)";
     out += pad("  " + std::string(c.name), kNameEnd) + wrap(meaning, width, kNameEnd) + "\n";
   }
+  out += pad("  <name>", kNameEnd) +
+         wrap(
+             "an internal variable of [[internal]], by its name (written by default after u "
+             "and v)",
+             width, kNameEnd) +
+         "\n";
+
+  out += "\n" +
+         wrap("Internal variables ([[internal]], one table each, at most " +
+                  std::to_string(kMaxInternal) + "; " +
+                  join(methods_with(&Capabilities::internal_variables)) + " only):",
+              width) +
+         "\n";
+  out += "  " +
+         wrap(
+             "z' = g(t, u, v, z): name = \"D\" (read by force.expression, the rates and "
+             "output.channels), initial = z(0), rate = g, a muparser expression of t, u, v and "
+             "the internal variables. z is continuous across impacts and evolves at rest; the "
+             "time-steppers take it by explicit Euler (first order), event_driven in its ODE.",
+             width, 2) +
+         "\n";
   return out;
 }
 

@@ -93,7 +93,7 @@ const KeySpec kKeys[] = {
      // Read by read_channels(), since what a method can write depends on the method.
      .get = [](const Scene& s) -> KeyValue {
        std::vector<std::string> names;
-       for (Channel c : s.output.channels) names.emplace_back(channel_name(c));
+       for (Channel c : s.output.channels) names.emplace_back(channel_name(c, s.model));
        return names;
      }},
     {.table = "output",

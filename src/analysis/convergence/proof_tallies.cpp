@@ -1,5 +1,7 @@
 #include "analysis/convergence/proof_tallies.hpp"
 
+#include <stdexcept>
+#include <type_traits>
 #include <variant>
 
 namespace impact::convergence {
@@ -14,9 +16,13 @@ ConvergencePoint measure_convergence(const Scene& scene, const std::optional<Mod
   point.tallies.last = scene.initial;
   std::visit(
       [&](auto& inner) {
-        TallyingStepper tallying(inner, scene.model, scene.grid.h, point.tallies);
-        point.errors =
-            measure_errors(tallying, reference.value_or(scene.model), scene.initial, scene.grid);
+        if constexpr (!ParticleStepper<std::remove_cvref_t<decltype(inner)>>) {
+          throw std::logic_error("proof tallies: a method with internal variables");
+        } else {
+          TallyingStepper tallying(inner, scene.model, scene.grid.h, point.tallies);
+          point.errors =
+              measure_errors(tallying, reference.value_or(scene.model), scene.initial, scene.grid);
+        }
       },
       stepper);
   point.final = point.tallies.last;

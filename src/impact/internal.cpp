@@ -1,0 +1,158 @@
+#include "impact/internal.hpp"
+
+#include <muParser.h>
+
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <stdexcept>
+
+namespace impact {
+
+namespace {
+
+std::string show(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", x);
+  return text;
+}
+
+bool identifier(const std::string& name) {
+  if (name.empty() || !(std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_'))
+    return false;
+  for (char c : name)
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) return false;
+  return true;
+}
+
+}  // namespace
+
+void define_variables(mu::Parser& parser, double& t, double& u, double& v, const Model& model,
+                      double* z) {
+  parser.DefineVar("t", &t);
+  parser.DefineVar("u", &u);
+  parser.DefineVar("v", &v);
+  for (std::size_t i = 0; i < model.internal.size() && i < kMaxInternal; ++i)
+    parser.DefineVar(model.internal[i].name, &z[i]);
+  parser.DefineConst("pi", std::numbers::pi);
+}
+
+std::string variables_named(const Model& model) {
+  if (model.internal.empty()) return "t, u and v";
+  std::string names;
+  for (std::size_t i = 0; i < model.internal.size(); ++i)
+    names += (i == 0                           ? ""
+              : i + 1 == model.internal.size() ? " and "
+                                               : ", ") +
+             model.internal[i].name;
+  return "t, u, v and the internal variable" + std::string(model.internal.size() > 1 ? "s " : " ") +
+         names;
+}
+
+void check_internal_variables(const Model& model) {
+  if (model.internal.size() > kMaxInternal)
+    throw std::invalid_argument("the model has " + std::to_string(model.internal.size()) +
+                                " internal variables; at most " + std::to_string(kMaxInternal) +
+                                " are allowed");
+  const mu::Parser functions;
+  for (std::size_t i = 0; i < model.internal.size(); ++i) {
+    const InternalVariable& z = model.internal[i];
+    const std::string quoted = "internal variable \"" + z.name + "\"";
+    if (!identifier(z.name))
+      throw std::invalid_argument(quoted +
+                                  ": a name is a letter or '_' followed by letters, digits or '_'");
+    if (z.name == "t" || z.name == "u" || z.name == "v" || z.name == "pi" ||
+        functions.GetFunDef().count(z.name) > 0)
+      throw std::invalid_argument(quoted +
+                                  ": the name is taken (t, u, v, pi and muparser's "
+                                  "functions are)");
+    for (std::size_t j = 0; j < i; ++j)
+      if (model.internal[j].name == z.name) throw std::invalid_argument(quoted + " is given twice");
+    if (!std::isfinite(z.initial))
+      throw std::invalid_argument(quoted + ": the initial value " + show(z.initial) +
+                                  " must be finite");
+  }
+}
+
+// One parser per rate, all bound to the same variables.
+struct InternalRates::Parsers {
+  explicit Parsers(const Model& model) : rates(model.internal.size()) {
+    for (std::size_t i = 0; i < rates.size(); ++i) {
+      const InternalVariable& variable = model.internal[i];
+      const std::string what = "the rate of internal variable \"" + variable.name + "\"";
+      if (variable.rate.find_first_not_of(" \t") == std::string::npos)
+        throw std::invalid_argument(what + " is empty; give g in " + variable.name + "' = g(" +
+                                    variables_named(model) + ")");
+      try {
+        define_variables(rates[i], t, u, v, model, z.data());
+        rates[i].SetExpr(variable.rate);
+      } catch (const mu::Parser::exception_type& e) {
+        throw std::invalid_argument(what + " does not parse: " + e.GetMsg() +
+                                    " (the variables are " + variables_named(model) + ")");
+      }
+    }
+  }
+  std::vector<mu::Parser> rates;
+  double t = 0.0, u = 0.0, v = 0.0;
+  std::array<double, kMaxInternal> z{};
+};
+
+InternalRates::InternalRates(const Model& model)
+    : model_(model), count_(model.internal.size()), parsers_() {
+  check_internal_variables(model);
+  parsers_ = std::make_unique<Parsers>(model_);
+  // Every rate at t = 0 from the initial values, so that a rate that uses an unknown name or is
+  // not finite there fails with the scene, not in the run.
+  std::array<double, kMaxInternal> rate{};
+  try {
+    evaluate(0.0, with_internal(model_, {}), rate);
+  } catch (const std::runtime_error& e) {
+    throw std::invalid_argument(e.what());
+  }
+}
+
+InternalRates::InternalRates(const InternalRates& other)
+    : model_(other.model_),
+      count_(other.count_),
+      parsers_(std::make_unique<Parsers>(other.model_)) {}
+
+InternalRates& InternalRates::operator=(const InternalRates& other) {
+  if (this != &other) *this = InternalRates(other);
+  return *this;
+}
+
+InternalRates::InternalRates(InternalRates&&) noexcept = default;
+InternalRates& InternalRates::operator=(InternalRates&&) noexcept = default;
+InternalRates::~InternalRates() = default;
+
+void InternalRates::evaluate(double t, const StateWithInternal& s,
+                             std::array<double, kMaxInternal>& rate) const {
+  Parsers& p = *parsers_;
+  p.t = t;
+  p.u = s.u;
+  p.v = s.v;
+  p.z = s.z;
+  for (std::size_t i = 0; i < count_; ++i) {
+    const std::string& name = model_.internal[i].name;
+    try {
+      rate[i] = p.rates[i].Eval();
+    } catch (const mu::Parser::exception_type& e) {
+      throw std::runtime_error("the rate of internal variable \"" + name +
+                               "\" fails at t = " + show(t) + ": " + e.GetMsg() +
+                               " (the variables are " + variables_named(model_) + ")");
+    }
+    if (!std::isfinite(rate[i]))
+      throw std::runtime_error("the rate of internal variable \"" + name + "\" is " +
+                               show(rate[i]) + " at t = " + show(t) +
+                               "; it must be finite wherever the run evaluates it");
+  }
+}
+
+std::string describe(const StateWithInternal& s) {
+  std::string text = "u = " + show(s.u) + ", v = " + show(s.v) + ", z = (";
+  for (std::size_t i = 0; i < kMaxInternal; ++i) text += (i ? ", " : "") + show(s.z[i]);
+  return text + ")";
+}
+
+}  // namespace impact

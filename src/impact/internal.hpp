@@ -1,0 +1,55 @@
+// The internal variables of a model (model.hpp): z' = g(t, u, v, z), each rate a muparser
+// expression of t, the particle's state and the internal variables by name, and the variables the
+// force expression and the rates read. A model without internal variables never builds these.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "impact/model.hpp"
+
+namespace mu {
+class Parser;
+}
+
+namespace impact {
+
+// Binds t, u, v, the model's internal variables (z[i] for model.internal[i]) and the constant pi
+// in `parser` by address: what a force expression and a rate may read.
+void define_variables(mu::Parser& parser, double& t, double& u, double& v, const Model& model,
+                      double* z);
+// "t, u and v", or "t, u, v and the internal variables beta, D", for messages.
+std::string variables_named(const Model& model);
+
+// Throws std::invalid_argument naming the variable for more than kMaxInternal internal variables,
+// a name that is not an identifier ([A-Za-z_][A-Za-z0-9_]*), one of t, u, v, pi or a muparser
+// function, a name given twice, or a non-finite initial value.
+void check_internal_variables(const Model& model);
+
+// The rates g_i of the model's internal variables, evaluated at (t, state, z).
+class InternalRates {
+ public:
+  // Throws std::invalid_argument (check_internal_variables, or a rate that is empty, does not
+  // parse, uses an unknown name or is not finite at t = 0 from the initial values).
+  explicit InternalRates(const Model& model);
+  InternalRates(const InternalRates& other);
+  InternalRates& operator=(const InternalRates& other);
+  InternalRates(InternalRates&&) noexcept;
+  InternalRates& operator=(InternalRates&&) noexcept;
+  ~InternalRates();
+
+  std::size_t size() const { return count_; }
+  // rate[i] = g_i(t, s.u, s.v, s.z) for i < size(); std::runtime_error naming the variable and t
+  // where a rate fails or is not finite.
+  void evaluate(double t, const StateWithInternal& s, std::array<double, kMaxInternal>& rate) const;
+
+ private:
+  struct Parsers;
+  Model model_;
+  std::size_t count_ = 0;
+  std::unique_ptr<Parsers> parsers_;
+};
+
+}  // namespace impact
