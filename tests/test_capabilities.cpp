@@ -38,12 +38,13 @@ const std::vector<Feature> kFeatures = {
      "--unset force.f --set 'force.expression=\"-9.80665\"'", "force.expression"},
     {"the iterations channel", &impact::Capabilities::iterations_channel,
      "--set 'output.channels=[\"u\",\"v\",\"iterations\"]'", "", "output.channels"},
-    // An internal variable the force reads (a decaying pull): [[internal]] has no --set, so its
-    // scene is another file; without it, the same force of t.
+    // An internal variable the force reads (a decaying pull, z = e^-t from 1): [[internal]] has no
+    // --set, so its scene is another file; the rows are u and v alone, and without the feature the
+    // force is what it would be with z held at 0, so a method that ignored z writes the same rows.
     {"internal variables", &impact::Capabilities::internal_variables,
-     "--unset force.f --set 'force.expression=\"-9.80665 - 5 * z\"'",
-     "--unset force.f --set 'force.expression=\"-9.80665 - 5 * exp(-t)\"'", "method.name",
-     "si.toml"},
+     "--unset force.f --set 'force.expression=\"-9.80665 - 5 * z\"' --set "
+     "'output.channels=[\"u\",\"v\"]'",
+     "--unset force.f --set 'force.expression=\"-9.80665\"'", "method.name", "si.toml"},
 };
 
 const std::string kInternal = "[[internal]]\nname = \"z\"\ninitial = 1.0\nrate = \"-z\"\n";

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "analysis/fit.hpp"
+#include "chain_support.hpp"
 #include "impact/chain.hpp"
 #include "impact/chain_moreau_jean.hpp"
 #include "impact/chain_reference.hpp"
@@ -18,6 +19,7 @@
 #include "impact/run.hpp"
 
 using namespace impact;
+using impact::testing::max_position_error;
 
 namespace {
 
@@ -33,18 +35,6 @@ ChainState dropped(double x1 = 1.0) {
   ChainState s;
   s.q << x1, x1 + 1.0;
   return s;
-}
-
-// max over the grid of |x - x_ref| (both masses) of Moreau-Jean at step h against the reference.
-double max_position_error(const Chain& chain, const ChainState& initial, double h, double T) {
-  const Grid grid = Grid::covering(T, h);
-  const ChainReference reference(chain, initial, {.t_end = grid.end()});
-  ChainMoreauJean stepper(chain, h, MoreauJeanParams{});
-  double error = 0;
-  simulate(stepper, initial, grid, [&](std::int64_t l, const ChainState& s, const StepInfo&) {
-    error = std::fmax(error, (s.q - reference.at(grid.t(l)).q).cwiseAbs().maxCoeff());
-  });
-  return error;
 }
 
 }  // namespace

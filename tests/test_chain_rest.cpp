@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "analysis/fit.hpp"
+#include "chain_support.hpp"
 #include "check_near.hpp"
 #include "impact/chain.hpp"
 #include "impact/chain_moreau_jean.hpp"
@@ -20,6 +21,7 @@
 #include "impact/run.hpp"
 
 using namespace impact;
+using impact::testing::max_position_error;
 
 namespace {
 
@@ -58,18 +60,6 @@ double closed_form_lift(const Chain& chain, const ChainState& s0, double t0) {
   double phase = alpha - std::acos(mean / (chain.k * R));  // w2 tau, mod 2 pi
   while (phase < 0) phase += 2 * std::numbers::pi;
   return t0 + phase / w2;
-}
-
-// max over the grid of |x - x_ref| (both masses) of Moreau-Jean at step h against the reference.
-double max_position_error(const Chain& chain, const ChainState& initial, double h, double T) {
-  const Grid grid = Grid::covering(T, h);
-  const ChainReference reference(chain, initial, {.t_end = grid.end()});
-  ChainMoreauJean stepper(chain, h, MoreauJeanParams{});
-  double error = 0;
-  simulate(stepper, initial, grid, [&](std::int64_t l, const ChainState& s, const StepInfo&) {
-    error = std::fmax(error, (s.q - reference.at(grid.t(l)).q).cwiseAbs().maxCoeff());
-  });
-  return error;
 }
 
 }  // namespace

@@ -130,8 +130,9 @@ TEST_CASE("internal variables: direct and moreau_jean converge to event_driven a
       CHECK(report.point->internal_final[0] == Approx(std::pow(1 - h, kT / h)).epsilon(1e-9));
     }
     // z is smooth (explicit Euler, order 1 pair by pair); u's error moves with where the impacts
-    // fall on the grid (measured pairwise: direct 0.75 then 1.59, moreau_jean 1.22 then 1.25),
-    // so its order is taken over the whole range, h / 4 (direct 1.17, moreau_jean 1.24).
+    // fall on the grid (measured on an Intel Xeon family 6 model 167, pairwise: direct 0.75 then
+    // 1.25, moreau_jean 1.22 then 1.59), so its order is taken over the whole range, h / 4
+    // (direct 1.00, moreau_jean 1.40).
     for (std::size_t k = 1; k < errors.size(); ++k) {
       const double z_order = std::log2(errors[k - 1].sup_internal / errors[k].sup_internal);
       INFO("h " << k << ": sup z " << errors[k].sup_internal << " order " << z_order);
@@ -187,7 +188,7 @@ TEST_CASE("internal variables: bad [[internal]] tables and methods are refused w
   };
   refused("[[internal]]\nname = \"t\"\ninitial = 0.0\nrate = \"1\"\n", "the name is taken");
   refused("[[internal]]\nname = \"z\"\ninitial = 0.0\nrate = \"1 +\"\n", "Unexpected end");
-  refused("[[internal]]\nname = \"z\"\ninitial = 0.0\nrate = \"q\"\n", "z");
+  refused("[[internal]]\nname = \"z\"\ninitial = 0.0\nrate = \"q\"\n", "Unexpected token \"q\"");
   refused("[[internal]]\nname = \"z\"\nrate = \"1\"\n", "needs initial");
   refused("[[internal]]\nname = \"z\"\ninitial = 0.0\nrate = \"1\"\nstiff = 1\n",
           "unknown key stiff");

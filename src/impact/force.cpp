@@ -5,11 +5,11 @@
 #include <array>
 #include <cctype>
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 #include <stdexcept>
 #include <string_view>
 
+#include "impact/format.hpp"
 #include "impact/harmonic_series.hpp"
 #include "impact/internal.hpp"
 #include "impact/step_quadrature.hpp"
@@ -17,12 +17,6 @@
 namespace impact {
 
 namespace {
-
-std::string show(double x) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.17g", x);
-  return text;
-}
 
 // muparser's '=' assigns to a variable, so "(t=0)+sin(20*t)" would set t to 0 inside the force; a
 // force only reads t, u and v. Comparisons ("==", "!=", "<=", ">=") are the other uses of '='.
@@ -102,7 +96,7 @@ struct ForceFunction::Expression {
                                     " values separated by commas, of which muparser would keep "
                                     "the last; give one (a comma only separates arguments)");
       if (!std::isfinite(f0))
-        throw std::invalid_argument("the expression is " + show(f0) + " at t = 0" +
+        throw std::invalid_argument("the expression is " + round_trip(f0) + " at t = 0" +
                                     (state ? ", u = 0, v = 0" : "") + "; it must be finite");
     } catch (const mu::Parser::exception_type& e) {
       // Positions are counted from 1 here; muparser's own message counts from 0, so it is left
@@ -138,10 +132,12 @@ struct ForceFunction::Expression {
     try {
       value = parser.Eval();
     } catch (const mu::Parser::exception_type& e) {
-      throw std::runtime_error("the force expression fails at t = " + show(at) + ": " + e.GetMsg());
+      throw std::runtime_error("the force expression fails at t = " + round_trip(at) + ": " +
+                               e.GetMsg());
     }
     if (!std::isfinite(value))
-      throw std::runtime_error("the force expression is " + show(value) + " at t = " + show(at) +
+      throw std::runtime_error("the force expression is " + round_trip(value) +
+                               " at t = " + round_trip(at) +
                                "; it must be finite wherever the run evaluates it");
     return value;
   }

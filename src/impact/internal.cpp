@@ -2,21 +2,17 @@
 
 #include <muParser.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 #include <stdexcept>
+
+#include "impact/format.hpp"
 
 namespace impact {
 
 namespace {
-
-std::string show(double x) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.17g", x);
-  return text;
-}
 
 bool identifier(const std::string& name) {
   if (name.empty() || !(std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_'))
@@ -70,7 +66,7 @@ void check_internal_variables(const Model& model) {
     for (std::size_t j = 0; j < i; ++j)
       if (model.internal[j].name == z.name) throw std::invalid_argument(quoted + " is given twice");
     if (!std::isfinite(z.initial))
-      throw std::invalid_argument(quoted + ": the initial value " + show(z.initial) +
+      throw std::invalid_argument(quoted + ": the initial value " + round_trip(z.initial) +
                                   " must be finite");
   }
 }
@@ -139,19 +135,29 @@ void InternalRates::evaluate(double t, const StateWithInternal& s,
       rate[i] = p.rates[i].Eval();
     } catch (const mu::Parser::exception_type& e) {
       throw std::runtime_error("the rate of internal variable \"" + name +
-                               "\" fails at t = " + show(t) + ": " + e.GetMsg() +
+                               "\" fails at t = " + round_trip(t) + ": " + e.GetMsg() +
                                " (the variables are " + variables_named(model_) + ")");
     }
     if (!std::isfinite(rate[i]))
       throw std::runtime_error("the rate of internal variable \"" + name + "\" is " +
-                               show(rate[i]) + " at t = " + show(t) +
+                               round_trip(rate[i]) + " at t = " + round_trip(t) +
                                "; it must be finite wherever the run evaluates it");
   }
 }
 
+std::array<double, kMaxInternal> InternalRates::evaluate(double t, const State& s, const double* z,
+                                                         double* rate) const {
+  StateWithInternal full{s, {}};
+  std::copy(z, z + count_, full.z.begin());
+  std::array<double, kMaxInternal> rates{};
+  evaluate(t, full, rates);
+  std::copy(rates.begin(), rates.begin() + static_cast<std::ptrdiff_t>(count_), rate);
+  return full.z;
+}
+
 std::string describe(const StateWithInternal& s) {
-  std::string text = "u = " + show(s.u) + ", v = " + show(s.v) + ", z = (";
-  for (std::size_t i = 0; i < kMaxInternal; ++i) text += (i ? ", " : "") + show(s.z[i]);
+  std::string text = "u = " + round_trip(s.u) + ", v = " + round_trip(s.v) + ", z = (";
+  for (std::size_t i = 0; i < kMaxInternal; ++i) text += (i ? ", " : "") + round_trip(s.z[i]);
   return text + ")";
 }
 

@@ -44,6 +44,10 @@ class InternalRates {
   // rate[i] = g_i(t, s.u, s.v, s.z) for i < size(); std::runtime_error naming the variable and t
   // where a rate fails or is not finite.
   void evaluate(double t, const StateWithInternal& s, std::array<double, kMaxInternal>& rate) const;
+  // The same for an ODE's right-hand side: the particle's state s and z[0..size()) from arrays,
+  // rate[0..size()) written; returns z as the array of a state (the rest 0).
+  std::array<double, kMaxInternal> evaluate(double t, const State& s, const double* z,
+                                            double* rate) const;
 
  private:
   struct Parsers;

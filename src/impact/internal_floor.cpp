@@ -1,64 +1,32 @@
 #include "impact/internal_floor.hpp"
 
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_odeiv2.h>
-
 #include <algorithm>
 #include <cmath>
-#include <exception>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
 #include "impact/gsl_errors.hpp"
+#include "impact/rk8pd.hpp"
 
 namespace impact {
 
-// The GSL objects; on the heap, since the system's params point here.
-struct FloorInternal::Gsl {
-  Gsl(const FloorInternal* owner, std::size_t n, double atol, double rtol) : self(owner) {
-    sys = gsl_odeiv2_system{&Gsl::rhs, nullptr, n, this};
-    step = gsl_odeiv2_step_alloc(gsl_odeiv2_step_rk8pd, n);
-    dense = gsl_odeiv2_step_alloc(gsl_odeiv2_step_rk8pd, n);
-    control = gsl_odeiv2_control_y_new(atol, rtol);
-    evolve = gsl_odeiv2_evolve_alloc(n);
-  }
-  Gsl(const Gsl&) = delete;
-  Gsl& operator=(const Gsl&) = delete;
-  ~Gsl() {
-    gsl_odeiv2_evolve_free(evolve);
-    gsl_odeiv2_control_free(control);
-    gsl_odeiv2_step_free(dense);
-    gsl_odeiv2_step_free(step);
-  }
-  // z' = g(t, phi, 0, z); a rate that fails is kept and rethrown after GSL returns.
+// The integrator; on the heap, since the system's params point here.
+struct FloorInternal::Gsl : Rk8pd {
+  Gsl(const FloorInternal* owner, std::size_t n, double atol, double rtol)
+      : Rk8pd(n, atol, rtol, &Gsl::rhs, this), self(owner) {}
+  // z' = g(t, phi, 0, z).
   static int rhs(double t, const double y[], double dydt[], void* params) {
     auto* g = static_cast<Gsl*>(params);
-    StateWithInternal s{{g->self->model_.phi, 0.0}, {}};
-    const std::size_t n = g->self->rates_.size();
-    std::copy(y, y + n, s.z.begin());
-    std::array<double, kMaxInternal> rate{};
     try {
-      g->self->rates_.evaluate(t, s, rate);
+      g->self->rates_.evaluate(t, {g->self->model_.phi, 0.0}, y, dydt);
     } catch (...) {
-      g->error = std::current_exception();
-      return GSL_EBADFUNC;
+      return g->failed();
     }
-    std::copy(rate.begin(), rate.begin() + static_cast<std::ptrdiff_t>(n), dydt);
     return GSL_SUCCESS;
-  }
-  void rethrow() {
-    if (error) std::rethrow_exception(std::exchange(error, nullptr));
   }
 
   const FloorInternal* self;
-  gsl_odeiv2_system sys{};
-  gsl_odeiv2_step* step;
-  gsl_odeiv2_step* dense;
-  gsl_odeiv2_control* control;
-  gsl_odeiv2_evolve* evolve;
-  std::exception_ptr error;
-  double h_next = 0;
 };
 
 FloorInternal::FloorInternal(const Model& model, double rtol, double atol, double max_step)

@@ -14,6 +14,7 @@
 
 #include "impact/event_track.hpp"
 #include "impact/gsl_errors.hpp"
+#include "impact/rk8pd.hpp"
 
 namespace impact {
 
@@ -23,62 +24,33 @@ constexpr int kSamples = 9;  // force samples per ODE step, ends included (ode_f
 
 }  // namespace
 
-// The GSL objects; on the heap, since the system's params point here.
-struct OdeLaw::Gsl {
+// The integrator and what its right-hand side reads; on the heap, since the system's params point
+// here.
+struct OdeLaw::Gsl : Rk8pd {
   Gsl(const ForceFunction* f, const InternalRates* r, double floor, const OdeSettings& s)
-      : force(f), rates(r), phi(floor) {
-    const std::size_t n = 2 + (rates ? rates->size() : 0);
-    sys = gsl_odeiv2_system{&Gsl::rhs, nullptr, n, this};
-    step = gsl_odeiv2_step_alloc(gsl_odeiv2_step_rk8pd, n);
-    dense = gsl_odeiv2_step_alloc(gsl_odeiv2_step_rk8pd, n);
-    control = gsl_odeiv2_control_y_new(s.atol, s.rtol);
-    evolve = gsl_odeiv2_evolve_alloc(n);
-  }
-  Gsl(const Gsl&) = delete;
-  Gsl& operator=(const Gsl&) = delete;
-  ~Gsl() {
-    gsl_odeiv2_evolve_free(evolve);
-    gsl_odeiv2_control_free(control);
-    gsl_odeiv2_step_free(dense);
-    gsl_odeiv2_step_free(step);
-  }
-  // y = (u - phi, v, z): y' = (v, f(t, u, v, z), g(t, u, v, z)). A force or rate that fails (an
-  // expression that is not finite) is kept and rethrown after GSL returns, rather than thrown
-  // through GSL's C frames.
+      : Rk8pd(2 + (r ? r->size() : 0), s.atol, s.rtol, &Gsl::rhs, this),
+        force(f),
+        rates(r),
+        phi(floor) {}
+  // y = (u - phi, v, z): y' = (v, f(t, u, v, z), g(t, u, v, z)).
   static int rhs(double t, const double y[], double dydt[], void* self) {
     auto* g = static_cast<Gsl*>(self);
     dydt[0] = y[1];
     try {
+      const State s{g->phi + y[0], y[1]};
       if (g->rates) {
-        StateWithInternal s{{g->phi + y[0], y[1]}, {}};
-        std::copy(y + 2, y + 2 + g->rates->size(), s.z.begin());
-        g->force->set_internal(s.z);
-        std::array<double, kMaxInternal> rate{};
-        g->rates->evaluate(t, s, rate);
-        std::copy(rate.begin(), rate.begin() + static_cast<std::ptrdiff_t>(g->rates->size()),
-                  dydt + 2);
+        g->force->set_internal(g->rates->evaluate(t, s, y + 2, dydt + 2));
       }
-      dydt[1] = g->force->at(t, {g->phi + y[0], y[1]});
+      dydt[1] = g->force->at(t, s);
     } catch (...) {
-      g->error = std::current_exception();
-      return GSL_EBADFUNC;
+      return g->failed();
     }
     return GSL_SUCCESS;
-  }
-  void rethrow() {
-    if (error) std::rethrow_exception(std::exchange(error, nullptr));
   }
 
   const ForceFunction* force;
   const InternalRates* rates;  // nullptr without internal variables
   double phi;
-  gsl_odeiv2_system sys{};
-  gsl_odeiv2_step* step;
-  gsl_odeiv2_step* dense;
-  gsl_odeiv2_control* control;
-  gsl_odeiv2_evolve* evolve;
-  std::exception_ptr error;
-  double h_next = 0;
 };
 
 OdeLaw::OdeLaw(const Model& model, const OdeSettings& settings)
