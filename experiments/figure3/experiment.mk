@@ -8,7 +8,9 @@ figure3_OUTPUTS := figures/figure3.png figures/figure3.pdf figures/figure3_h_swe
 $(figure3_OUTPUTS) &: experiments/figure3/plot.gp $(figure3_SCENES) $(IMPACT) $(figure3_DRIVER)
 	@mkdir -p $(RESULTS)/figure3 figures
 	for scene in no_cor cor075; do for method in direct fb_newton exact; do \
+	  channels='["u","v","N_scheme","E"]'; [ $$method = exact ] && channels='["u","v","N","E"]'; \
 	  $(IMPACT) run experiments/figure3/$$scene.toml --set method.name=$$method --quiet \
+	    --set "output.channels=$$channels" \
 	    --out $(RESULTS)/figure3/$${scene}_$$method.csv || exit 1; done; done
 	$(figure3_DRIVER) $(RESULTS)/figure3
 	gnuplot -e "results='$(RESULTS)/figure3'" experiments/figure3/plot.gp

@@ -1,8 +1,10 @@
 # Figure 3 (Section 5.2, f = 0, u0 = 5 m, v0 = -1 m/s, h = 1e-3 s): left column without COR, right
 # column with COR = 0.75; rows u, v, N, E. Thick blue: direct (5-1); dashed orange: fb_newton
 # (5-3); thin black: the exact solution sampled on the same grid. N is a force per unit mass, the
-# row at t_l carries N^{l-1} (the impulse of the step ending at t_l, divided by h), drawn as
-# impulses so that the one-step spike of height 2/h is visible. Panel titles give
+# row at t_l carries N^{l-1}, drawn as impulses so that the one-step spike of height 2/h is
+# visible: for direct and fb_newton the paper's N^l of (4-3) (the channel N_scheme, which Newton's
+# law does not change: with COR its impulse 2 |v| is not the floor's (1 + COR) |v|, which the
+# channel N carries), for exact the impulse of the step ending at t_l divided by h. Panel titles give
 # max_l |direct - fb_newton| (from labels.gp, written by exp_figure3).
 # Second figure: the energy kept by the one impact, E(T)/E(0), against h.
 # Usage: gnuplot -e "results='results/figure3'" experiments/figure3/plot.gp

@@ -10,7 +10,9 @@ figure4_OUTPUTS := figures/figure4.png figures/figure4.pdf figures/figure4_h_swe
 $(figure4_OUTPUTS) &: experiments/figure4/plot.gp $(figure4_SCENES) $(IMPACT) $(figure4_DRIVER)
 	@mkdir -p $(RESULTS)/figure4 figures
 	for scene in no_cor cor075; do for method in direct fb_newton exact; do \
+	  channels='["u","v","N_scheme","E"]'; [ $$method = exact ] && channels='["u","v","N","E"]'; \
 	  $(IMPACT) run experiments/figure4/$$scene.toml --set method.name=$$method --quiet \
+	    --set "output.channels=$$channels" \
 	    --out $(RESULTS)/figure4/$${scene}_$$method.csv || exit 1; done; done
 	$(IMPACT) run experiments/figure4/no_cor.toml --set method.free_flight=paper --quiet \
 	  --out $(RESULTS)/figure4/no_cor_direct_paper.csv

@@ -1,7 +1,8 @@
 # Figure 4 (Section 5.2, f = -9.80665 m/s^2, u0 = 5 m, v0 = -1 m/s, h = 1e-3 s): left column
 # without COR, right column with COR = 0.75; rows u, v, N, E. Thick blue: direct (5-1); dashed
 # orange: fb_newton (5-3); thin black: the exact solution on the same grid (elastic without COR,
-# Zeno rest at t_inf with COR). N (a force per unit mass; the row at t_l carries N^{l-1}) is drawn
+# Zeno rest at t_inf with COR). N (a force per unit mass; the row at t_l carries N^{l-1}; for
+# direct and fb_newton the paper's N^l of (4-3), the channel N_scheme, as in Figure 3) is drawn
 # as impulses on a log scale so that the impact spikes (~2 V / h) and the resting force (~|f|) show
 # together. Titles give max_l |direct - fb_newton| and the rest times (labels.gp, exp_figure4).
 # Second figure, figure4_h_sweep: energy loss, mean energy, rest time and impact count over 121

@@ -15,7 +15,7 @@ std::vector<Sample> record(const Scene& scene) {
   simulate(
       stepper, scene.initial, scene.grid,
       [&](std::int64_t l, const State& s, const StepInfo& info) {
-        samples.push_back({scene.grid.t(l), s.u, s.v, info.contact_force, energy(scene.model, s)});
+        samples.push_back({scene.grid.t(l), s.u, s.v, scheme_force(info), energy(scene.model, s)});
       });
   return samples;
 }
@@ -54,7 +54,7 @@ void RestObserver::operator()(std::int64_t l, const State& s, const StepInfo& in
   if (l == 0)
     energy_initial_ = E;
   else
-    contacts_.add_step(l - 1, previous_, s, info.contact_force);
+    contacts_.add_step(l - 1, previous_, s, scheme_force(info));
   energy_final_ = E;
   energy_sum_ += E;
   previous_ = s;

@@ -13,7 +13,10 @@
 
 namespace impact {
 
-// One row of a run: the state at t_l, N^{l-1} (the CSV convention, paper_notes/reading.md) and E.
+// One row of a run: the state at t_l, N^{l-1} (the CSV convention, paper_notes/reading.md) as the
+// method's solve gives it (scheme_force of model.hpp: with a COR, direct's and fb_newton's N^l of
+// (4-3), which the claims about (4-3) and Figures 3 and 4 read, not the impulse the N channel
+// carries) and E.
 struct Sample {
   double t = 0, u = 0, v = 0, N = 0, E = 0;
 };

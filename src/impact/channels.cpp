@@ -16,12 +16,18 @@ const ChannelInfo kChannels[] = {
     {Channel::iterations, "iterations",
      "Newton or ODE-driver iterations of the steps since the previous row",
      &Capabilities::iterations_channel},
+    {Channel::N_scheme, "N_scheme",
+     "N^l of (4-3) as the scheme's solve gives it, the mean over the steps since the previous row "
+     "as N: with floor.cor, Newton's law then replaces the velocity, and h N_scheme (2|v| at an "
+     "impact) is not the floor's impulse (1 + COR)|v|, which N carries; without floor.cor equal to "
+     "N. The paper's N of Figures 3 and 4",
+     &Capabilities::scheme_force_channel},
     {Channel::z1, "z1", "internal variable 1", &Capabilities::internal_variables},
     {Channel::z2, "z2", "internal variable 2", &Capabilities::internal_variables},
     {Channel::z3, "z3", "internal variable 3", &Capabilities::internal_variables},
     {Channel::z4, "z4", "internal variable 4", &Capabilities::internal_variables},
 };
-constexpr std::size_t kFixed = 5;  // the channels before z1
+constexpr std::size_t kFixed = 6;  // the channels before z1
 static_assert(std::size(kChannels) == kFixed + kMaxInternal);
 
 }  // namespace
@@ -53,6 +59,29 @@ const ChannelInfo& channel_info(Channel channel) {
 bool can_write(const MethodInfo& method, Channel channel) {
   const ChannelInfo& info = channel_info(channel);
   return !info.needs || method.can.*info.needs;
+}
+
+double channel_value(const OutputRow& row, Channel channel) {
+  switch (channel) {
+    case Channel::u:
+      return row.state.u;
+    case Channel::v:
+      return row.state.v;
+    case Channel::N:
+      return row.contact_force;
+    case Channel::E:
+      return row.energy;
+    case Channel::iterations:
+      return static_cast<double>(row.iterations);
+    case Channel::N_scheme:
+      return row.scheme_force;
+    case Channel::z1:
+    case Channel::z2:
+    case Channel::z3:
+    case Channel::z4:
+      break;
+  }
+  return row.internal[*internal_index(channel)];
 }
 
 }  // namespace impact

@@ -9,12 +9,13 @@
 #include <string_view>
 
 #include "impact/registry.hpp"
+#include "impact/row_stream.hpp"
 
 namespace impact {
 
 // z1..z4: the model's internal variables (model.hpp), named in a scene and a CSV header by the
 // model's names; channels() lists the others.
-enum class Channel { u, v, N, E, iterations, z1, z2, z3, z4 };
+enum class Channel { u, v, N, E, iterations, N_scheme, z1, z2, z3, z4 };
 
 struct ChannelInfo {
   Channel channel;
@@ -22,7 +23,7 @@ struct ChannelInfo {
   bool Capabilities::*needs = nullptr;  // what a method must have to write it; nullptr: any
 };
 
-// The channels every model has (u, v, N, E, iterations).
+// The channels every model has (u, v, N, E, iterations, N_scheme).
 std::span<const ChannelInfo> channels();
 // The channel of the model's internal variable i (i < kMaxInternal), and which one a channel is.
 Channel internal_channel(std::size_t i);
@@ -35,5 +36,8 @@ inline std::string_view channel_name(Channel channel) {
 }
 // Whether `method` can write `channel`.
 bool can_write(const MethodInfo& method, Channel channel);
+
+// A row's value of `channel` (row_stream.hpp), as the CSV writes it; iterations as a double.
+double channel_value(const OutputRow& row, Channel channel);
 
 }  // namespace impact

@@ -168,6 +168,8 @@ class BasicDirect {
         flight_.start(l + 1, {0.0, lanes_.v});
       else
         repeats_.contact(l, {0.0, lanes_.v});
+      if (restitution_.has_cor && lanes_.contact_force > 0) [[unlikely]]
+        return restituted_step(s, v_free);
     }
     s = {phi_ + lanes_.gap, lanes_.v};
     StepInfo info;
@@ -176,6 +178,17 @@ class BasicDirect {
   }
 
  private:
+  // A contact step on which Newton's law replaced the scheme's velocity: the floor's impulse is
+  // the velocity's jump over the free flight, v^{l+1} - v_free = v^{l+1} - v^l - h f^l; (4-3)'s
+  // N^l stays beside it (StepInfo). Out of line, so that the step loop keeps its registers.
+  [[gnu::noinline]] StepInfo restituted_step(State& s, double v_free) const {
+    s = {phi_ + lanes_.gap, lanes_.v};
+    StepInfo info;
+    info.contact_force = lanes_.contact_force;
+    restitute(info, lanes_.v, v_free, h_);
+    return info;
+  }
+
   // The constant force needs no flight state; a time-dependent one does not repeat.
   struct NoFlight {
     NoFlight(const Model&, double) {}
@@ -225,6 +238,7 @@ class DirectAsPrinted {
     velocity_after_step(restitution_.has_cor, restitution_.cor, restitution_.fixed_point,
                         info.contact_force > 0, s.v, v_scheme, v_next);
     s = {phi_, v_next};
+    if (restitution_.has_cor && info.contact_force > 0) restitute(info, v_next, free.v, h_);
     return info;
   }
 

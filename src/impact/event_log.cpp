@@ -40,9 +40,10 @@ void EventLog::operator()(std::int64_t l, const State& s, const StepInfo& info) 
   l_ = l;
   if (l > 0) {
     constexpr double kEps = std::numeric_limits<double>::epsilon();
-    const bool contact =
-        is_contact_step(force_.model(), s, info.contact_force) &&
-        h_ * info.contact_force > 8 * kEps * (std::fabs(before_.v) + std::fabs(s.v));
+    // (4-3)'s force decides a contact step (contact.hpp), with or without Newton's law.
+    const double N = scheme_force(info);
+    const bool contact = is_contact_step(force_.model(), s, N) &&
+                         h_ * N > 8 * kEps * (std::fabs(before_.v) + std::fabs(s.v));
     if (contact) {
       contact_step(l - 1, s, force_.step_mean(static_cast<double>(l - 1) * h_, h_, before_));
     } else {

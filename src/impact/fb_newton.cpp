@@ -149,6 +149,8 @@ StepInfo FbNewton::do_step(State& s, std::int64_t l) {
                         x_free < 0, v_before, v_scheme, gap_.v);
     flight_.start(l + 1, gap_);
     if (flight_.constant_force()) repeats_.contact(l, gap_);
+    // Newton's law replaced (4-1)'s velocity: the floor's impulse is the jump over the free flight.
+    if (restitution_.has_cor && x_free < 0) restitute(info, gap_.v, free.v, h);
   }
   s = {phi + gap_.u, gap_.v};
   return info;

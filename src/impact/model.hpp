@@ -94,12 +94,25 @@ inline double energy(const Model& model, const State& s) {
 
 // What one step from t_l to t_{l+1} reports besides the new state.
 struct StepInfo {
-  // N^l of (4-1): the contact impulse delivered in (t_l, t_{l+1}] divided by h, so that
-  // h * sum N^l = v^n - v^0 - f T (the impulse identity (4-9) with a body force).
+  // The contact impulse delivered in (t_l, t_{l+1}] divided by h, for every method, so that
+  // h * sum = v^n - v^0 - int f (the impulse identity (4-9) with a body force): the N channel.
+  // Where Newton's law acts (a COR), the impulse of the step in which it acts.
   double contact_force = 0.0;
   int iterations = 0;     // Newton iterations (fb_newton) or ODE steps (penalty); 0 otherwise
   bool converged = true;  // false when an iterative solve hit its cap without meeting its rule
+  // Newton's law replaced the velocity of the scheme's own solve of (4-3) on this step (direct and
+  // fb_newton with a COR, restitution.hpp): scheme_force is then N^l as (4-3) gave it, whose
+  // impulse h N^l is not the floor's (it is 2|v| where the velocity jumps by (1 + COR)|v|).
+  bool restituted = false;
+  double scheme_force = 0.0;
 };
+
+// N^l of the method's own contact solve: (4-3)'s for the paper's scheme (before Newton's law
+// replaces the velocity), the impulse / h for every other method. What decides a contact step
+// (contact.hpp) and what the claims about (4-3) read; the N channel is contact_force.
+inline double scheme_force(const StepInfo& info) {
+  return info.restituted ? info.scheme_force : info.contact_force;
+}
 
 // The time grid: t_l = l h exactly (never accumulated), l = 0..steps.
 struct Grid {

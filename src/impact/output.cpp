@@ -21,7 +21,7 @@ void CsvWriter::header() {
 
 void CsvWriter::row(double t, const OutputRow& row) {
   const State& s = row.state;
-  // At most 1 + 9 fields of 24 characters (-1.2345678901234567e-308) and their separators.
+  // At most 1 + 10 fields of 24 characters (-1.2345678901234567e-308) and their separators.
   char buf[256];
   char* p = format_double(buf, buf + sizeof buf, t);
   for (Channel c : channels_) {
@@ -42,11 +42,8 @@ void CsvWriter::row(double t, const OutputRow& row) {
       case Channel::iterations:
         p = std::to_chars(p, buf + sizeof buf, row.iterations).ptr;
         break;
-      case Channel::z1:
-      case Channel::z2:
-      case Channel::z3:
-      case Channel::z4:
-        p = format_double(p, buf + sizeof buf, row.internal[*internal_index(c)]);
+      default:
+        p = format_double(p, buf + sizeof buf, channel_value(row, c));
         break;
     }
   }

@@ -53,6 +53,9 @@ struct Capabilities {
   bool state_force = false;         // force.expression reads u or v: f(t, u, v)
   bool internal_variables = false;  // [[internal]]: z' = g(t, u, v, z), read by the force
   bool iterations_channel = false;  // output.channels "iterations": Newton iterations, ODE steps
+  // output.channels "N_scheme": the paper's scheme solves (4-3) for N^l, which Newton's law does
+  // not change (channels.cpp)
+  bool scheme_force_channel = false;
   bool reference = false;     // samples an exact solution (--against's reference, tight tolerances)
   bool energy_bound = false;  // the discrete energy (3-1) never rises (Lemma 1, (4-5), stability)
   bool exact_events = false;  // reports its own events (EventSource), else read off its steps

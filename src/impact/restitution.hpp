@@ -21,6 +21,7 @@
 #include <cstring>
 
 #include "impact/contact_law.hpp"
+#include "impact/model.hpp"
 
 namespace impact {
 
@@ -43,6 +44,16 @@ inline RestitutionRule restitution_rule(const ContactLaw& law) {
   const auto* newton = std::get_if<NewtonLaw>(&law);
   if (!newton) return {};
   return {newton->e, true, restitution_fixed_point(newton->e)};
+}
+
+// A step on which Newton's law acted (has_cor and N^l > 0), whose info holds N^l of (4-3): the
+// contact impulse over h becomes the jump of the velocity over where the free flight would have
+// ended, (v_after - v_free) / h = (v^{l+1} - v^l - h f^l) / h, so that h sum N = v^n - v^0 - int f
+// holds with a COR too; N^l is kept beside it as the scheme's force.
+inline void restitute(StepInfo& info, double v_after, double v_free, double h) {
+  info.scheme_force = info.contact_force;
+  info.restituted = true;
+  info.contact_force = (v_after - v_free) / h;
 }
 
 // Real is double (Mask = bool, Bits = std::int64_t) or a vector of lanes (Mask and Bits its

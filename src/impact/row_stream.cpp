@@ -17,26 +17,27 @@ RowStream::RowStream(std::int64_t every, const Grid& grid, RowSink row, std::int
       check_every_(check_ && check_every > 0 ? check_every : 0),
       next_check_(check_every_ > 0 ? check_every_ : std::numeric_limits<std::int64_t>::max()) {}
 
-bool RowStream::at(std::int64_t l, const State& s, const StepInfo& info, double force_sum,
-                   std::int64_t iteration_sum) {
-  return at(l, s, {}, info, force_sum, iteration_sum);
+bool RowStream::at(std::int64_t l, const State& s, const StepInfo& info, const Sums& sums) {
+  return at(l, s, {}, info, sums);
 }
 
 bool RowStream::at(std::int64_t l, const StateWithInternal& s, const StepInfo& info,
-                   double force_sum, std::int64_t iteration_sum) {
-  return at(l, s, s.z, info, force_sum, iteration_sum);
+                   const Sums& sums) {
+  return at(l, s, s.z, info, sums);
 }
 
 bool RowStream::at(std::int64_t l, const State& s, const std::array<double, kMaxInternal>& internal,
-                   const StepInfo& info, double force_sum, std::int64_t iteration_sum) {
+                   const StepInfo& info, const Sums& sums) {
   bool wrote = false;
   if (l == rows_.next()) {
-    OutputRow row{l, s, 0.0, iteration_sum, 0.0, internal};
+    OutputRow row{l, s, 0.0, 0.0, sums.iterations, 0.0, internal};
     // One step: N^{l-1} as the step gave it (bit for bit, -0 included); more: their mean.
     const std::int64_t steps = l - last_row_;
-    row.contact_force = steps == 1  ? info.contact_force
-                        : steps > 1 ? force_sum / static_cast<double>(steps)
-                                    : 0.0;
+    const auto mean = [&](double one, double sum) {
+      return steps == 1 ? one : steps > 1 ? sum / static_cast<double>(steps) : 0.0;
+    };
+    row.contact_force = mean(info.contact_force, sums.force);
+    row.scheme_force = mean(scheme_force(info), sums.scheme);
     row_(row);
     last_row_ = l;
     rows_.advance();

@@ -24,6 +24,7 @@ struct OutputRow {
   std::int64_t l = 0;
   State state;
   double contact_force = 0.0;   // the mean of N^j over those steps (0 at l = 0)
+  double scheme_force = 0.0;    // the mean of their scheme_force (model.hpp), where asked for
   std::int64_t iterations = 0;  // the sum of their iterations
   double energy = 0.0;          // E at t_l where the output asks for it (run_scene.hpp)
   std::array<double, kMaxInternal> internal{};  // the internal variables at t_l (model.hpp)
@@ -53,20 +54,24 @@ class RowStream {
   RowStream(std::int64_t every, const Grid& grid, RowSink row, std::int64_t check_every = 0,
             Check check = {});
 
+  // The sums over the steps since the last row (those of step l included) of N^j, of the scheme's
+  // force and of the iterations.
+  struct Sums {
+    double force = 0.0, scheme = 0.0;
+    std::int64_t iterations = 0;
+  };
+
   // The next step at which at() must be called.
   std::int64_t next() const { return next_; }
   // Step l == next() with the state there, the StepInfo of the step that ended there and the sums
-  // of N^j and of the iterations over the steps since the last row (those of step l included);
-  // returns whether a row was written (the sums then start again from 0).
-  bool at(std::int64_t l, const State& s, const StepInfo& info, double force_sum,
-          std::int64_t iteration_sum);
+  // since the last row; returns whether a row was written (the sums then start again from 0).
+  bool at(std::int64_t l, const State& s, const StepInfo& info, const Sums& sums);
   // The same for a state with internal variables: the row carries them.
-  bool at(std::int64_t l, const StateWithInternal& s, const StepInfo& info, double force_sum,
-          std::int64_t iteration_sum);
+  bool at(std::int64_t l, const StateWithInternal& s, const StepInfo& info, const Sums& sums);
 
  private:
   bool at(std::int64_t l, const State& s, const std::array<double, kMaxInternal>& internal,
-          const StepInfo& info, double force_sum, std::int64_t iteration_sum);
+          const StepInfo& info, const Sums& sums);
 
   RowSchedule rows_;
   RowSink row_;
@@ -75,8 +80,9 @@ class RowStream {
 };
 
 // The observer a step loop sees (simulate()): kSums adds N^l and the iterations of every step,
-// which the rows need when they carry N or the iterations.
-template <bool kSums>
+// which the rows need when they carry N or the iterations, kScheme the scheme's force (the channel
+// N_scheme).
+template <bool kSums, bool kScheme = false>
 class RowTap {
  public:
   static constexpr bool kStepsLocally = true;  // simulate() keeps next_ and the sums in registers
@@ -87,14 +93,12 @@ class RowTap {
   template <class St>
   void operator()(std::int64_t l, const St& s, const StepInfo& info) {
     if constexpr (kSums) {
-      force_sum_ += info.contact_force;
-      iteration_sum_ += info.iterations;
+      sums_.force += info.contact_force;
+      sums_.iterations += info.iterations;
     }
+    if constexpr (kScheme) sums_.scheme += scheme_force(info);
     if (l == next_) [[unlikely]] {
-      if (due(stream_, l, s, info, force_sum_, iteration_sum_)) {
-        force_sum_ = 0.0;
-        iteration_sum_ = 0;
-      }
+      if (due(stream_, l, s, info, sums_)) sums_ = {};
       next_ = stream_->next();
     }
   }
@@ -103,19 +107,18 @@ class RowTap {
   // Out of line and on copies, so that nothing on the common path takes the loop state's address.
   template <class St>
   [[gnu::noinline]] static bool due(RowStream* stream, std::int64_t l, St s, StepInfo info,
-                                    double force_sum, std::int64_t iteration_sum) {
-    return stream->at(l, s, info, force_sum, iteration_sum);
+                                    RowStream::Sums sums) {
+    return stream->at(l, s, info, sums);
   }
 
   RowStream* stream_;
   std::int64_t next_;
-  double force_sum_ = 0.0;
-  std::int64_t iteration_sum_ = 0;
+  RowStream::Sums sums_;
 };
 
 // Runs `stepper` over the grid, streaming its rows to `stream`; `watch`, when given, sees every
 // step first (the errors against a reference, the work of f(t), a time-stepper's events), out of
-// line. `sums`: the rows carry N or the iterations. A watch sees the internal variables of a
+// line. A watch sees the internal variables of a
 // stepper that follows them (zero for the others); a function of State can be one.
 using StepWatch =
     std::function<void(std::int64_t l, const StateWithInternal& s, const StepInfo& info)>;
@@ -124,11 +127,12 @@ using StepWatch =
 [[gnu::noinline]] void watch_step(const StepWatch& watch, std::int64_t l, StateWithInternal s,
                                   StepInfo info);
 
+// `sums`: the rows carry N or the iterations; `scheme`: the channel N_scheme.
 template <class S>
 RunSummary simulate_rows(S& stepper, const State& initial, const Grid& grid, RowStream& stream,
-                         bool sums, const StepWatch& watch) {
-  const auto with = [&]<bool kSums>() {
-    RowTap<kSums> tap(stream);
+                         bool sums, const StepWatch& watch, bool scheme = false) {
+  const auto with = [&]<bool kSums, bool kScheme>() {
+    RowTap<kSums, kScheme> tap(stream);
     if (!watch) return simulate(stepper, initial, grid, tap);
     return simulate(stepper, initial, grid,
                     [&](std::int64_t l, const auto& s, const StepInfo& info) {
@@ -136,7 +140,8 @@ RunSummary simulate_rows(S& stepper, const State& initial, const Grid& grid, Row
                       tap(l, s, info);
                     });
   };
-  return sums ? with.template operator()<true>() : with.template operator()<false>();
+  if (scheme) return with.template operator()<true, true>();
+  return sums ? with.template operator()<true, false>() : with.template operator()<false, false>();
 }
 
 }  // namespace impact

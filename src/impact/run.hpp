@@ -87,7 +87,7 @@ template <class S, class St, class Observer>
     if (!s.finite() || !std::isfinite(info.contact_force) || !info.converged) [[unlikely]]
       throw_step_failure(stepper, l, grid.t(l), s, info);
   }
-  summary.contact_steps += info.contact_force > 0;
+  summary.contact_steps += scheme_force(info) > 0;
   summary.iterations += info.iterations;
   summary.max_iterations =
       info.iterations > summary.max_iterations ? info.iterations : summary.max_iterations;
@@ -110,7 +110,7 @@ template <class S, class Observer>
     const StepInfo info = stepper.do_step(s, ++l);
     account(stepper, l, s, info, grid, summary, observe);
     period[static_cast<std::size_t>(k)] = {s, info};
-    contact_steps += info.contact_force > 0;
+    contact_steps += scheme_force(info) > 0;
     iterations += info.iterations;
   }
   const std::int64_t periods = (grid.steps - 1 - l) / p;

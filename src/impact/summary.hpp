@@ -52,7 +52,7 @@ class SummaryObserver {
       start_summary(lanes_, s.u);
     else
       summary_step(lanes_, static_cast<double>(l - 1), model_.phi, previous_.u, previous_.v, s.u,
-                   info.contact_force);
+                   scheme_force(info));
     previous_ = s;
     if constexpr (std::is_same_v<St, StateWithInternal>) internal_ = s.z;
   }

@@ -44,7 +44,7 @@ class TallyingStepper {
   StepInfo do_step(State& s, std::int64_t l) {
     const State before = s;
     const StepInfo info = inner_.do_step(s, l);
-    const double N = info.contact_force, phi = model_.phi;
+    const double N = scheme_force(info), phi = model_.phi;
     tallies_.impulse += h_ * N;
     tallies_.complementarity += h_ * N * (s.u - phi);
     tallies_.energy_drop += N * (before.u - phi);

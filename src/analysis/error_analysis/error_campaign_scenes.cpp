@@ -173,7 +173,7 @@ Trace run_trace(const Scene& scene) {
     simulate(stepper, scene.initial, scene.grid,
              [&](std::int64_t, const State& s, const StepInfo& info) {
                trace.s.push_back(s);
-               trace.N.push_back(info.contact_force);
+               trace.N.push_back(scheme_force(info));
              });
   } catch (const NumericalError&) {
     trace = Trace{};

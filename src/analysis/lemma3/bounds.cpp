@@ -50,7 +50,7 @@ Lemma3Measurement measure_lemma3(AnyStepper& stepper, const Model& model, const 
     m.max_v = std::fmax(m.max_v, std::fabs(s.v));
     if (l == 0) return;
     half_path += 0.5 * grid.h * std::fabs(s.v);
-    const double N = info.contact_force;
+    const double N = scheme_force(info);
     m.impulse += grid.h * N;
     records.push_back({energy(model, s) - energy(model, previous),
                        rebound_energy_roundoff(model.phi, grid.h, previous.u, s.v, N),

@@ -151,7 +151,7 @@ ForcingRun run_forcing_case(const ForcingCase& c) {
     frozen = {std::fmax(frozen.velocity, now.velocity),
               std::fmax(frozen.displacement, now.displacement),
               std::fmax(frozen.displacement_full, now.displacement_full)};
-    if (l > 0) energy.observe(l, s, info.contact_force);
+    if (l > 0) energy.observe(l, s, scheme_force(info));
   });
   run.norms = force_norms(model, run.T);
   for (std::size_t i = 0; i < kForceReadings.size(); ++i) {

@@ -69,7 +69,7 @@ class StabilityObserver {
     const double f = std::fabs(model_.f);
     const double ulp_u = kEpsilon * std::fmax(std::fabs(previous_.u), std::fabs(model_.phi));
     return 16 * kEpsilon * (max_v_ * max_v_ + f * (max_u_ + t * max_v_ + t * t * f)) +
-           (info.contact_force > 0 ? 4 * std::fabs(s.v) * ulp_u / grid_.h : 0.0);
+           (scheme_force(info) > 0 ? 4 * std::fabs(s.v) * ulp_u / grid_.h : 0.0);
   }
 
   // fb_newton's smoothed pair has a N = eps/2 at the root of (5-3), which (4-6) turns into
@@ -81,7 +81,7 @@ class StabilityObserver {
   double smoothing(const State& s, const StepInfo& info) const {
     if (!smoothing_) return 0;
     const FbNewtonParams& fb = *smoothing_;
-    const double a = std::fabs(s.u - model_.phi), N = info.contact_force;
+    const double a = std::fabs(s.u - model_.phi), N = scheme_force(info);
     return 0.5 * fb.epsilon +
            fb.tolerance * std::fmax(1.0, std::fmax(a, N)) * (a + N + std::sqrt(fb.epsilon)) +
            2 * kEpsilon * a * (2 * a / (grid_.h * grid_.h) + N);
