@@ -6,8 +6,8 @@ include(CMakePackageConfigHelpers)
 install(TARGETS impact_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 
 # The public headers: the umbrella impact.hpp, the API it includes, and the headers those include.
-# Left out, as the core's implementation: gsl_errors.hpp, processor.hpp, step_quadrature.hpp and
-# work_energy.hpp (no public header includes them).
+# Left out, as the core's implementation: gsl_errors.hpp, processor.hpp and step_quadrature.hpp (no
+# public header includes them).
 set(IMPACT_PUBLIC_HEADERS
   impact.hpp atomic_file.hpp chain.hpp chain_moreau_jean.hpp chain_reference.hpp channels.hpp
   contact.hpp contact_law.hpp direct.hpp direct_located.hpp ensemble.hpp
@@ -16,7 +16,7 @@ set(IMPACT_PUBLIC_HEADERS
   internal.hpp internal_floor.hpp internal_stepper.hpp
   model.hpp moreau_jean.hpp ode_flight.hpp output.hpp penalty.hpp registry.hpp repeats.hpp
   restitution.hpp row_stream.hpp run.hpp run_scene.hpp scene.hpp scheme_flight.hpp stepper.hpp
-  summary.hpp summary_lanes.hpp version.hpp)
+  summary.hpp summary_lanes.hpp version.hpp work_energy.hpp)
 list(TRANSFORM IMPACT_PUBLIC_HEADERS PREPEND ${PROJECT_SOURCE_DIR}/src/impact/)
 # A public header that includes a header left out would break every program that includes it:
 # stop at configure time naming both (a new header must join the list above or stay unincluded).

@@ -18,6 +18,7 @@
 #include "impact/model.hpp"
 #include "impact/ode_flight.hpp"
 #include "impact/run.hpp"
+#include "impact/work_energy.hpp"
 
 namespace impact {
 
@@ -57,7 +58,16 @@ class ReferenceSolution {
     }
     if (closed_form_)
       rest_ = closed_form_->rest_time().value_or(std::numeric_limits<double>::infinity());
+    // The impacts' changes of v^2/2, for E(t) as the E channel defines it (work_energy.hpp).
+    const EventSink sink = [this](const Event& e) {
+      if (e.kind == EventKind::impact)
+        impact_energy_ += 0.5 * e.v_after * e.v_after - 0.5 * e.v_before * e.v_before;
+    };
+    if (track_) track_->set_event_sink(sink);
+    if (ode_track_) ode_track_->set_event_sink(sink);
   }
+  ReferenceSolution(const ReferenceSolution&) = delete;  // the sink points to this one
+  ReferenceSolution& operator=(const ReferenceSolution&) = delete;
   State at(double t) {
     if (closed_form_) {
       if (!(t > 0) || t >= rest_) return closed_form_->at(t);
@@ -72,6 +82,9 @@ class ReferenceSolution {
   std::array<double, kMaxInternal> internal_at(double t) const {
     return ode_track_->law().internal_at(t);
   }
+  // What the impacts up to the t of the last at(t) changed v^2/2 by (with f(t): the reference's E
+  // at t is E(0) plus this, work_energy.hpp).
+  double impact_energy() const { return impact_energy_; }
   std::optional<double> first_impact() const {
     if (closed_form_) return closed_form_->impact_time(1);
     return track_ ? track_->first_impact() : ode_track_->first_impact();
@@ -84,6 +97,7 @@ class ReferenceSolution {
   double rest_ = 0;
   std::optional<EventTrack> track_;
   std::optional<EventTrackOf<OdeLaw>> ode_track_;
+  double impact_energy_ = 0;
 };
 
 // Accumulates the norms as a run streams (an observer for simulate()), so that other observers can
@@ -93,6 +107,7 @@ class ErrorObserver {
  public:
   ErrorObserver(const Model& model, const State& initial, const Grid& grid)
       : exact_(model, initial, grid.end()),
+        initial_energy_(initial_energy(model, initial)),
         internal_(model.internal.size()),
         model_(model),
         grid_(grid),
@@ -104,7 +119,7 @@ class ErrorObserver {
   // St: State, or StateWithInternal (the internal variables are compared too).
   template <class St>
   void operator()(std::int64_t l, const St& s, const StepInfo& info) {
-    if (!seen_contact_ && l > 0 && info.contact_force > 0) {
+    if (!seen_contact_ && l > 0 && scheme_force(info) > 0) {
       seen_contact_ = true;
       first_crossing_ = grid_.t(l - 1) + floor_crossing(model_, previous_);
     }
@@ -115,7 +130,9 @@ class ErrorObserver {
     if (pending_.size() == kChunk) compare_pending();
   }
 
-  // The norms of the run that simulate() summarised as `run`.
+  // The norms of the run that simulate() summarised as `run`. energy_end compares v^2/2 - f u at T
+  // with f the force's constant part, a function of the state at T, the same for the method and
+  // the reference (the work-precision study's measure).
   ErrorNorms result(const RunSummary& run) {
     compare_pending();
     ErrorNorms e = e_;
@@ -125,6 +142,16 @@ class ErrorObserver {
     e.run = run;
     return e;
   }
+  // The same with energy_end = |E^n - E(T)| for E as the E channel defines it with f(t)
+  // (work_energy.hpp): `energy_final` is the method's E^n, the reference's is E(0) plus what its
+  // impacts changed v^2/2 by.
+  ErrorNorms result(const RunSummary& run, double energy_final) {
+    ErrorNorms e = result(run);
+    e.energy_end = std::fabs(energy_final - (initial_energy_ + exact_.impact_energy()));
+    return e;
+  }
+  // The method's state at the last step seen.
+  const State& final_state() const { return previous_; }
   // The time spent evaluating the reference so far (wall clock, seconds).
   double reference_seconds() const { return reference_seconds_; }
 
@@ -164,6 +191,7 @@ class ErrorObserver {
   }
 
   ReferenceSolution exact_;
+  double initial_energy_;  // E(0), work_energy.hpp
   std::size_t internal_;  // the model's internal variables
   Model model_;
   Grid grid_;

@@ -16,14 +16,29 @@ RunReport run_scene(const Scene& scene, AnyStepper& stepper, const RunOutputs& o
   const auto& channels = scene.output.channels;
   const auto has = [&](Channel c) { return std::ranges::count(channels, c) > 0; };
   const bool energy = outputs.rows && has(Channel::E);
+  const bool own_events = method_info(scene.method).can.exact_events;
   // E with a time-dependent force needs the work of f over every step, not only the written ones;
-  // so does a summary's E_T.
+  // so do a summary's E_T and the energy error against the reference. A method that follows the
+  // motion between its events gives the work of each flight from its events (work_energy.hpp).
   std::optional<WorkEnergy> work;
-  if ((energy || outputs.summary) && !constant_force(scene.model))
-    work.emplace(scene.model, scene.initial, scene.grid.h);
+  if ((energy || outputs.summary || outputs.against_exact) && !constant_force(scene.model))
+    work.emplace(scene.model, scene.initial, scene.grid.h, own_events);
+  // A method that knows its events dates the rest by them (its final stick), not on the grid.
+  std::optional<double> rest_from_events;
+  const bool rest_by_events = outputs.summary && own_events;
   std::optional<EventLog> log;
-  if (outputs.events && !attach_event_sink(stepper, outputs.events))
-    log.emplace(scene.model, scene.grid.h, outputs.events);
+  if (outputs.events || (work && work->follows_motion()) || rest_by_events) {
+    const EventSink sink = [&](const Event& e) {
+      if (work) work->event(e);
+      if (e.kind == EventKind::stick)
+        rest_from_events = e.t;
+      else
+        rest_from_events.reset();
+      if (outputs.events) outputs.events(e);
+    };
+    if (!attach_event_sink(stepper, sink) && outputs.events)
+      log.emplace(scene.model, scene.grid.h, outputs.events);
+  }
   std::optional<ErrorObserver> errors;
   if (outputs.against_exact) errors.emplace(scene.model, scene.initial, scene.grid);
   SummaryObserver summary(scene.model, scene.grid);
@@ -65,7 +80,8 @@ RunReport run_scene(const Scene& scene, AnyStepper& stepper, const RunOutputs& o
         },
         outputs.check_every, outputs.check);
     const bool sums = has(Channel::N) || has(Channel::iterations);
-    report.summary = simulate_rows(stepper, scene.initial, scene.grid, stream, sums, watch);
+    report.summary = simulate_rows(stepper, scene.initial, scene.grid, stream, sums, watch,
+                                   has(Channel::N_scheme));
   } else if (summary_inline && !watch) {
     report.summary = simulate(stepper, scene.initial, scene.grid, summary);
   } else if (summary_inline) {
@@ -86,9 +102,12 @@ RunReport run_scene(const Scene& scene, AnyStepper& stepper, const RunOutputs& o
     // With f(t), E^n is the E channel's, v^2/2 - f(0) u(0) - W, summed over the same steps, so
     // that a sweep's E_T is impact run's last E bit for bit.
     if (work) report.point->energy_final = work->energy(report.point->final);
+    if (rest_by_events) report.point->rest_time = rest_from_events;
   }
   if (errors) {
-    report.errors = errors->result(report.summary);
+    // The energy error compares the E channel's E^n with the reference's E(T), as it defines E.
+    report.errors = work ? errors->result(report.summary, work->energy(errors->final_state()))
+                         : errors->result(report.summary);
     report.reference_seconds = errors->reference_seconds();
   }
   report.seconds = std::max(0.0, total - report.reference_seconds);
