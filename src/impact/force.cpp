@@ -18,29 +18,6 @@ namespace impact {
 
 namespace {
 
-// muparser's '=' assigns to a variable, so "(t=0)+sin(20*t)" would set t to 0 inside the force; a
-// force only reads t, u and v. Comparisons ("==", "!=", "<=", ">=") are the other uses of '='.
-void refuse_assignment(const std::string& text) {
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    if (text[i] != '=') continue;
-    const bool comparison =
-        (i > 0 && std::string_view("=!<>").find(text[i - 1]) != std::string_view::npos) ||
-        (i + 1 < text.size() && text[i + 1] == '=');
-    if (comparison) continue;
-    // The name assigned to: the word before the '='.
-    std::size_t end = i;
-    while (end > 0 && text[end - 1] == ' ') --end;
-    std::size_t start = end;
-    while (start > 0 &&
-           (std::isalnum(static_cast<unsigned char>(text[start - 1])) || text[start - 1] == '_'))
-      --start;
-    const std::string name = start < end ? text.substr(start, end - start) : "a value";
-    throw std::invalid_argument("the expression assigns to " + name + " with '=' at position " +
-                                std::to_string(i + 1) +
-                                "; a force only reads t, u and v (to compare, write '==')");
-  }
-}
-
 // A token muparser could not read that starts as a number does ("9.8e", "2.5e+").
 bool starts_number(const std::string& token) {
   return !token.empty() && (std::isdigit(static_cast<unsigned char>(token[0])) || token[0] == '.');
@@ -81,7 +58,7 @@ struct ForceFunction::Expression {
                                   " are allowed");
     if (text.find_first_not_of(" \t") == std::string::npos)
       throw std::invalid_argument("the expression is empty; give a function of t (and u, v)");
-    refuse_assignment(text);
+    refuse_assignment(text, "a force only reads " + variables_named(model));
     try {
       define_variables(parser, t, u, v, model, z.data());
       parser.SetExpr(text);
@@ -91,13 +68,13 @@ struct ForceFunction::Expression {
       const double f0 = parser.Eval();
       state =
           reads_state(parser, model);  // muparser records the variables as the first Eval parses
-      if (const int values = parser.GetNumResults(); values > 1)
-        throw std::invalid_argument("the expression has " + std::to_string(values) +
-                                    " values separated by commas, of which muparser would keep "
-                                    "the last; give one (a comma only separates arguments)");
-      if (!std::isfinite(f0))
-        throw std::invalid_argument("the expression is " + round_trip(f0) + " at t = 0" +
-                                    (state ? ", u = 0, v = 0" : "") + "; it must be finite");
+      refuse_value_list(parser);
+      // A force of t alone must be finite where every run starts; one of the state is probed at
+      // the scene's initial state by the scene reader (check_force), and elsewhere where the run
+      // evaluates it.
+      if (!std::isfinite(f0) && !state)
+        throw std::invalid_argument("the expression is " + round_trip(f0) +
+                                    " at t = 0; it must be finite");
     } catch (const mu::Parser::exception_type& e) {
       // Positions are counted from 1 here; muparser's own message counts from 0, so it is left
       // out where the position is all it adds.

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <string_view>
 
 #include "impact/format.hpp"
 
@@ -59,16 +60,54 @@ void check_internal_variables(const Model& model) {
       throw std::invalid_argument(quoted +
                                   ": a name is a letter or '_' followed by letters, digits or '_'");
     if (z.name == "t" || z.name == "u" || z.name == "v" || z.name == "pi" ||
-        functions.GetFunDef().count(z.name) > 0)
+        functions.GetFunDef().count(z.name) > 0 || functions.GetConst().count(z.name) > 0)
       throw std::invalid_argument(quoted +
-                                  ": the name is taken (t, u, v, pi and muparser's "
-                                  "functions are)");
+                                  ": the name is taken (t, u, v, pi, muparser's constants _pi "
+                                  "and _e and its functions are)");
+    // The CSV of the rows writes a column per channel and the events file t, kind, v_before and
+    // v_after, each followed by the internal variables' columns.
+    for (std::string_view column : {"N", "E", "iterations", "N_scheme", "kind", "v_before",
+                                    "v_after"})
+      if (z.name == column)
+        throw std::invalid_argument(quoted +
+                                    ": the name is taken by a column of the output (the channels "
+                                    "u, v, N, E, iterations, N_scheme and the events' t, kind, "
+                                    "v_before, v_after); give the variable another name");
     for (std::size_t j = 0; j < i; ++j)
       if (model.internal[j].name == z.name) throw std::invalid_argument(quoted + " is given twice");
     if (!std::isfinite(z.initial))
       throw std::invalid_argument(quoted + ": the initial value " + round_trip(z.initial) +
                                   " must be finite");
   }
+}
+
+void refuse_assignment(const std::string& text, const std::string& reads) {
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] != '=') continue;
+    const bool comparison =
+        (i > 0 && std::string_view("=!<>").find(text[i - 1]) != std::string_view::npos) ||
+        (i + 1 < text.size() && text[i + 1] == '=');
+    if (comparison) continue;
+    // The name assigned to: the word before the '=' (or the operator, "+=").
+    std::size_t end = i;
+    if (end > 0 && std::string_view("+-*/").find(text[end - 1]) != std::string_view::npos) --end;
+    while (end > 0 && text[end - 1] == ' ') --end;
+    std::size_t start = end;
+    while (start > 0 &&
+           (std::isalnum(static_cast<unsigned char>(text[start - 1])) || text[start - 1] == '_'))
+      --start;
+    const std::string name = start < end ? text.substr(start, end - start) : "a value";
+    throw std::invalid_argument("the expression assigns to " + name + " with '=' at position " +
+                                std::to_string(i + 1) + "; " + reads +
+                                " (to compare, write '==')");
+  }
+}
+
+void refuse_value_list(mu::Parser& parser) {
+  if (const int values = parser.GetNumResults(); values > 1)
+    throw std::invalid_argument("the expression has " + std::to_string(values) +
+                                " values separated by commas, of which muparser would keep the "
+                                "last; give one (a comma only separates arguments)");
 }
 
 // One parser per rate, all bound to the same variables.
@@ -81,11 +120,24 @@ struct InternalRates::Parsers {
         throw std::invalid_argument(what + " is empty; give g in " + variable.name + "' = g(" +
                                     variables_named(model) + ")");
       try {
+        refuse_assignment(variable.rate, "a rate only reads " + variables_named(model));
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(what + ": " + e.what());
+      }
+      z = with_internal(model, {}).z;
+      try {
         define_variables(rates[i], t, u, v, model, z.data());
         rates[i].SetExpr(variable.rate);
+        // The first Eval parses: an unknown name or a malformed expression fails here, and the
+        // values it gives are counted. Its value (at t = 0, u = v = 0) is not checked: the scene
+        // reader evaluates the rates at the initial state.
+        rates[i].Eval();
+        refuse_value_list(rates[i]);
       } catch (const mu::Parser::exception_type& e) {
         throw std::invalid_argument(what + " does not parse: " + e.GetMsg() +
                                     " (the variables are " + variables_named(model) + ")");
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(what + ": " + e.what());
       }
     }
   }
@@ -98,14 +150,6 @@ InternalRates::InternalRates(const Model& model)
     : model_(model), count_(model.internal.size()), parsers_() {
   check_internal_variables(model);
   parsers_ = std::make_unique<Parsers>(model_);
-  // Every rate at t = 0 from the initial values, so that a rate that uses an unknown name or is
-  // not finite there fails with the scene, not in the run.
-  std::array<double, kMaxInternal> rate{};
-  try {
-    evaluate(0.0, with_internal(model_, {}), rate);
-  } catch (const std::runtime_error& e) {
-    throw std::invalid_argument(e.what());
-  }
 }
 
 InternalRates::InternalRates(const InternalRates& other)

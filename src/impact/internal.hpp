@@ -24,15 +24,29 @@ void define_variables(mu::Parser& parser, double& t, double& u, double& v, const
 std::string variables_named(const Model& model);
 
 // Throws std::invalid_argument naming the variable for more than kMaxInternal internal variables,
-// a name that is not an identifier ([A-Za-z_][A-Za-z0-9_]*), one of t, u, v, pi or a muparser
-// function, a name given twice, or a non-finite initial value.
+// a name that is not an identifier ([A-Za-z_][A-Za-z0-9_]*), a name that is taken (t, u, v, pi,
+// muparser's constants _pi and _e and its functions; a channel's or an event column's name, which
+// the CSV headers would then show twice or mislabel: N, E, iterations, N_scheme, kind, v_before,
+// v_after), a name given twice, or a non-finite initial value.
 void check_internal_variables(const Model& model);
+
+// What a force expression and a rate may not be, checked on the text before muparser sees it:
+// an assignment with '=' (muparser's "t = 1" sets t; "+=", "-=", ... too), which would change a
+// variable that the force and the other rates read. Throws std::invalid_argument naming what is
+// assigned and the position; `reads` says what the expression may read ("a force only reads t,
+// u and v").
+void refuse_assignment(const std::string& text, const std::string& reads);
+// After the first Eval: several comma-separated values ("1,2"), of which muparser keeps the last.
+// Throws std::invalid_argument.
+void refuse_value_list(mu::Parser& parser);
 
 // The rates g_i of the model's internal variables, evaluated at (t, state, z).
 class InternalRates {
  public:
-  // Throws std::invalid_argument (check_internal_variables, or a rate that is empty, does not
-  // parse, uses an unknown name or is not finite at t = 0 from the initial values).
+  // Throws std::invalid_argument (check_internal_variables, or a rate that is empty, assigns with
+  // '=', does not parse, uses an unknown name or has several comma-separated values). A rate that
+  // is not finite where the run evaluates it is reported there (evaluate); the scene reader
+  // evaluates every rate at the initial state.
   explicit InternalRates(const Model& model);
   InternalRates(const InternalRates& other);
   InternalRates& operator=(const InternalRates& other);

@@ -249,6 +249,8 @@ std::optional<Contact> OdeLaw::at_end() {
 }
 
 std::optional<Contact> OdeLaw::search(double horizon, long& budget) {
+  const long budget_given = budget, ode_steps_before = ode_steps_;
+  const double from = t_b_;
   while (budget > 0 && ode_ok_ && certified_ <= horizon) {
     if (certified_ >= t_b_) {
       if (t_b_ >= settings_.end) return at_end();
@@ -266,17 +268,33 @@ std::optional<Contact> OdeLaw::search(double horizon, long& budget) {
     }
   }
   if (!ode_ok_ || out_of_steps_) budget = 0;
+  // A search that spent its budget on ODE steps did not stall on a contact: rk8pd's error control
+  // kept its steps that short (a stiff rate or force).
+  if (budget <= 0 && ode_ok_ && !out_of_steps_ && 2 * (ode_steps_ - ode_steps_before) >= budget_given) {
+    stiff_ = true;
+    stiff_from_ = from;
+  }
   return std::nullopt;
 }
 
 std::string OdeLaw::failure() const {
   std::ostringstream msg;
   msg.precision(6);
+  // What sets rk8pd's step: the force, and the internal variables' rates where there are some.
+  const std::string varies =
+      internal_count_ > 0 ? "the force or an internal variable's rate varies" : "the force varies";
   if (out_of_steps_)
     msg << "rk8pd used up the run's budget of ODE steps (" << ode_steps_ << " by t = " << t_b_
         << "; method.max_ode_steps, 0: automatic, " << kAutomaticBudget << " + "
-        << kAutomaticBudgetPerGridStep << " per grid step): the force varies on a scale of about "
+        << kAutomaticBudgetPerGridStep << " per grid step): " << varies << " on a scale of about "
         << (t_b_ - t_a_) << " s (its last step); raise method.max_ode_steps, or shorten time.T";
+  else if (stiff_)
+    msg << "rk8pd's error control (rtol = " << settings_.rtol << ", atol = " << settings_.atol
+        << ") took steps of about " << (t_b_ - t_a_) << " s from t = " << stiff_from_
+        << " and reached only t = " << t_b_ << " in a million of them: " << varies
+        << " on that scale, a stiff system for rk8pd, an explicit method (not a contact: the "
+           "particle is in flight there); a rate or force with a slower time scale, or a time "
+           "stepper (direct, moreau_jean), can run it";
   else if (!ode_ok_)
     msg << "rk8pd could not take a step from t = " << t_b_ << " within rtol = " << settings_.rtol
         << ", atol = " << settings_.atol << " (GSL: " << gsl_strerror(failed_status_)

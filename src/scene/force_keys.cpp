@@ -4,6 +4,7 @@
 #include <string>
 
 #include "impact/force.hpp"
+#include "impact/format.hpp"
 #include "impact/registry.hpp"
 #include "scene/toml_text.hpp"
 
@@ -112,7 +113,23 @@ void check_force(const KeyReader& r, const toml::table& root, const Scene& scene
                  "the expression is empty; give a function of t, or leave the key out");
   bool reads_state = false;
   try {
-    reads_state = ForceFunction(scene.model).state_dependent();
+    const ForceFunction force(scene.model);
+    reads_state = force.state_dependent();
+    // A force of the state where the run starts (z at its initial values), so that one that is
+    // not finite there fails with the scene; a force of t alone was evaluated at t = 0 above.
+    if (reads_state) {
+      try {
+        force.at(0.0, scene.initial);
+      } catch (const std::runtime_error& e) {
+        const StateWithInternal start = with_internal(scene.model, scene.initial);
+        r.fail_value("force", "expression", *expression,
+                     std::string(e.what()) + " (the initial state: " +
+                         (scene.model.internal.empty() ? "u = " + round_trip(start.u) +
+                                                             ", v = " + round_trip(start.v)
+                                                       : describe(start)) +
+                         ")");
+      }
+    }
   } catch (const std::invalid_argument& e) {
     r.fail_value("force", "expression", *expression, e.what());
   }

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <stdexcept>
 
 #include "scene/scene_error.hpp"
+#include "scene/scene_keys.hpp"
 #include "scene/suggest.hpp"
 #include "scene/toml_text.hpp"
 
@@ -19,27 +21,40 @@ const std::string& Origins::of(std::string_view table, std::string_view key) con
   return file_;
 }
 
-void apply_set(toml::table& root, const std::string& assignment, Origins& origins) {
-  const std::string change = "--set " + cut(assignment);
-  auto fail = [&](const std::string& why) { throw SceneError(change + ": " + why); };
-  auto eq = assignment.find('=');
-  if (eq == std::string::npos) fail("expected table.key=value");
-  std::string path = assignment.substr(0, eq);
-  std::string value = assignment.substr(eq + 1);
-  auto dot = path.find('.');
-  if (dot == std::string::npos || dot == 0 || dot + 1 == path.size() ||
-      path.find('.', dot + 1) != std::string::npos)
-    fail("the key must be table.key, e.g. time.h");
-  std::string tname = path.substr(0, dot), key = path.substr(dot + 1);
+namespace {
 
-  toml::node_view<toml::node> slot = root[tname];
-  if (!slot) {
-    root.insert(tname, toml::table{});
-    origins.record(tname, "", change);
-  }
-  toml::table* table = root[tname].as_table();
-  if (!table) fail(std::string("[").append(show_key(tname)) + "] is not a table");
+std::vector<std::string_view> names_of(const toml::table& table) {
+  std::vector<std::string_view> out;
+  for (auto&& [name, node] : table) out.push_back(name.str());
+  return out;
+}
 
+// The [[internal]] table whose name is `name`, or SceneError (through `fail`) naming the variables
+// the scene has.
+template <class Fail>
+toml::table& internal_entry(toml::table& root, const std::string& name, const std::string& file,
+                            const Fail& fail) {
+  toml::array* entries = root["internal"].as_array();
+  if (!entries)
+    fail("there is no [[internal]] in " + file +
+         ": an internal variable is added in the scene file, with name, initial and rate");
+  std::vector<std::string_view> names;
+  for (toml::node& entry : *entries)
+    if (toml::table* table = entry.as_table())
+      if (const auto* n = table->get_as<std::string>("name")) {
+        if (n->get() == name) return *table;
+        names.push_back(n->get());
+      }
+  fail("there is no internal variable " + show_string(name) + " in " + file +
+       " (its internal variables: " + join(names) + ")" + did_you_mean(name, names));
+  throw std::logic_error("unreachable");
+}
+
+// Reads `value` as a TOML value (number, boolean, string, array), a bare word as a string, and
+// puts it at `key` of `table`.
+template <class Fail>
+void set_value(toml::table& table, const std::string& key, const std::string& value,
+               const Fail& fail) {
   if (find_non_ascii_outside_comments(value) != std::string_view::npos)
     fail("the value '" + cut(value) + "' has a non-ASCII character (a scene's values are ASCII)");
   // A TOML value (number, boolean, string, array); a bare word is read as a string.
@@ -50,7 +65,7 @@ void apply_set(toml::table& root, const std::string& assignment, Origins& origin
     toml::table parsed = toml::parse(line);
     // One value, not a value and more TOML after it ("0.01\nT = 5" would set time.T too).
     if (parsed.size() != 1) fail("the value '" + cut(value) + "' is not a single TOML value");
-    table->insert_or_assign(key, *parsed.get("value"));
+    table.insert_or_assign(key, *parsed.get("value"));
   } catch (const toml::parse_error& e) {
     // A bare word is a name (method, stepper, channel): a letter, then letters, digits, _ - or .;
     // anything else (1e400, [1,) is a malformed value, with toml++'s reason.
@@ -60,8 +75,49 @@ void apply_set(toml::table& root, const std::string& assignment, Origins& origin
                       });
     if (!word)
       fail("the value '" + cut(value) + "' is not a TOML value (" + cut(e.description()) + ")");
-    table->insert_or_assign(key, value);
+    table.insert_or_assign(key, value);
   }
+}
+
+}  // namespace
+
+void apply_set(toml::table& root, const std::string& assignment, Origins& origins) {
+  const std::string change = "--set " + cut(assignment);
+  auto fail = [&](const std::string& why) { throw SceneError(change + ": " + why); };
+  auto eq = assignment.find('=');
+  if (eq == std::string::npos) fail("expected table.key=value");
+  std::string path = assignment.substr(0, eq);
+  std::string value = assignment.substr(eq + 1);
+  // internal.NAME.key: a key of the [[internal]] table of the variable NAME.
+  if (const auto internal = internal_key(path)) {
+    if (!internal->spec || internal->key == "name") {
+      std::vector<std::string_view> keys;
+      for (const KeySpec& spec : internal_keys())
+        if (spec.key != "name") keys.push_back(spec.key);
+      fail("the key of an internal variable is internal.NAME.key with key one of " + join(keys) +
+           " (the name addresses the variable; rename it in the scene file), e.g. internal." +
+           (internal->name.empty() ? std::string("z") : internal->name) + ".initial" +
+           (internal->key.empty() ? "" : did_you_mean(internal->key, keys)));
+    }
+    set_value(internal_entry(root, internal->name, origins.file(), fail), internal->key, value,
+              fail);
+    origins.record("internal", internal->name + "." + internal->key, change);
+    return;
+  }
+  auto dot = path.find('.');
+  if (dot == std::string::npos || dot == 0 || dot + 1 == path.size() ||
+      path.find('.', dot + 1) != std::string::npos)
+    fail("the key must be table.key, e.g. time.h (an internal variable's: internal.NAME.key)");
+  std::string tname = path.substr(0, dot), key = path.substr(dot + 1);
+
+  toml::node_view<toml::node> slot = root[tname];
+  if (!slot) {
+    root.insert(tname, toml::table{});
+    origins.record(tname, "", change);
+  }
+  toml::table* table = root[tname].as_table();
+  if (!table) fail(std::string("[").append(show_key(tname)) + "] is not a table");
+  set_value(*table, key, value, fail);
   origins.record(tname, key, change);
 }
 
@@ -69,20 +125,34 @@ void apply_unset(toml::table& root, const std::string& path, const std::vector<s
                  Origins& origins) {
   const std::string change = "--unset " + cut(path);
   auto fail = [&](const std::string& why) { throw SceneError(change + ": " + why); };
+  for (const auto& set : sets)
+    if (set.substr(0, set.find('=')) == path) fail("--set " + cut(set) + " sets it too; give one");
+  // internal.NAME: the variable NAME (its [[internal]] table); its keys are all required.
+  if (const auto internal = internal_key(path)) {
+    if (!internal->key.empty())
+      fail("every [[internal]] table needs name, initial and rate: --set " + path +
+           "=... changes it, --unset internal." + internal->name + " removes the variable");
+    if (origins.of("internal", internal->name) == change) return;  // removed already
+    internal_entry(root, internal->name, origins.file(), fail);
+    toml::array& entries = *root["internal"].as_array();
+    for (auto entry = entries.begin(); entry != entries.end(); ++entry)
+      if (const toml::table* table = entry->as_table())
+        if (const auto* n = table->get_as<std::string>("name"); n && n->get() == internal->name) {
+          entries.erase(entry);
+          break;
+        }
+    if (entries.empty()) root.erase("internal");
+    origins.record("internal", internal->name, change);
+    return;
+  }
   const auto dot = path.find('.');
   const std::string tname = path.substr(0, dot);
   const std::string key = dot == std::string::npos ? "" : path.substr(dot + 1);
   if (tname.empty() || path.find('=') != std::string::npos ||
       (dot != std::string::npos && (key.empty() || key.find('.') != std::string::npos)))
     fail("expected table.key or table, e.g. floor.cor or force");
-  for (const auto& set : sets)
-    if (set.substr(0, set.find('=')) == path) fail("--set " + cut(set) + " sets it too; give one");
 
-  const auto names = [](const toml::table& table) {
-    std::vector<std::string_view> out;
-    for (auto&& [name, node] : table) out.push_back(name.str());
-    return out;
-  };
+  const auto names = names_of;
   // A second --unset of the same key or table has nothing left to remove, and need not.
   const bool removed =
       origins.of(tname, key) == change || origins.of(tname) == "--unset " + cut(tname);

@@ -5,10 +5,12 @@
 // processor, the date and the run's summary.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "impact/atomic_file.hpp"
 #include "impact/scene.hpp"
 
 namespace impact {
@@ -34,5 +36,16 @@ std::string json_number(double x);
 // "-") or is not a regular file to be created (a device, a pipe, /dev/stdout), which has no
 // place beside it.
 std::string sidecar_path(const std::string& output, bool written_in_place);
+// The same for an output not opened yet (writes_in_place, atomic_file.hpp).
+inline std::string sidecar_path(const std::string& output) {
+  return sidecar_path(output, writes_in_place(output));
+}
+// The sidecar as check_distinct (atomic_file.hpp) names it among a command's outputs: "the
+// provenance file of --out (o.csv.json)", to be moved by renaming --out or --no-provenance.
+NamedPath sidecar_named(const std::string& path, const std::string& flag);
+// Opens `sidecar` at `path` (not empty): an OutputError of its path (a name too long for NAME_MAX
+// once ".json" is added) says that --no-provenance leaves it out.
+void open_sidecar(std::optional<AtomicFile>& sidecar, const std::string& path,
+                  const std::string& flag);
 
 }  // namespace impact

@@ -42,6 +42,12 @@ std::string resolved_scene(const Scene& scene) {
       for (const KeySpec& key : method_keys())
         if (key.method == method_name(scene.method)) add(key);
   }
+  // The internal variables, one [[internal]] table each, in the model's order.
+  for (const InternalVariable& variable : scene.model.internal) {
+    text += "\n[[internal]]\n";
+    for (const KeySpec& spec : internal_keys())
+      text += std::string(spec.key) + " = " + show_value(spec.get_variable(variable)) + "\n";
+  }
   return text;
 }
 

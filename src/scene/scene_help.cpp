@@ -152,12 +152,18 @@ std::string scene_help(std::size_t width) {
          "\n";
   out += "  " +
          wrap(
-             "z' = g(t, u, v, z): name = \"D\" (read by force.expression, the rates and "
-             "output.channels), initial = z(0), rate = g, a muparser expression of t, u, v and "
-             "the internal variables. z is continuous across impacts and evolves at rest; the "
-             "time-steppers take it by explicit Euler (first order), event_driven in its ODE.",
+             "z' = g(t, u, v, z). z is continuous across impacts and evolves at rest; the "
+             "time-steppers take it by explicit Euler (first order), event_driven in its ODE. "
+             "--set, --unset and --vary name a variable's key as internal.NAME.key (--set "
+             "internal.D.initial=0.5, --vary internal.D.initial=0:1:11); --unset internal.NAME "
+             "removes the variable, --unset internal all of them. Keys (all required):",
              width, 2) +
          "\n";
+  for (const KeySpec& spec : internal_keys())
+    out += pad("    " + std::string(spec.key), kNameEnd) +
+           wrap(std::string(spec.meaning) + (spec.also.empty() ? "" : "; " + std::string(spec.also)),
+                width, kNameEnd) +
+           "\n";
   return out;
 }
 

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -55,6 +56,10 @@ struct KeySpec {
   std::string_view meaning = {};
   KeyValue (*get)(const Scene&) = nullptr;  // its default (nullptr: required, or none)
   void (*set)(Scene&, const KeyValue&) = nullptr;
+  // A key of each [[internal]] table (internal_keys.cpp), which --set, --unset and --vary address
+  // as internal.NAME.key: its value in one variable.
+  KeyValue (*get_variable)(const InternalVariable&) = nullptr;
+  void (*set_variable)(InternalVariable&, const KeyValue&) = nullptr;
 };
 
 struct TableSpec {
@@ -70,6 +75,16 @@ std::span<const KeySpec> scene_keys();
 std::span<const KeySpec> method_keys();
 // The keys of [force] (force_keys.cpp), which scene_keys() includes.
 std::span<const KeySpec> force_keys();
+// The keys of each [[internal]] table (internal_keys.cpp): name, initial, rate (table "internal").
+std::span<const KeySpec> internal_keys();
+// The internal variable's key a --set, --unset or --vary names as internal.NAME.key: the variable's
+// index in the model and the key's spec; SceneError-free (nullopt) when `path` is not of that form.
+struct InternalKey {
+  std::string name;     // NAME
+  const KeySpec* spec;  // nullptr: no such key of [[internal]]
+  std::string key;      // as written
+};
+std::optional<InternalKey> internal_key(std::string_view path);
 
 // The key table.key of every scene (nullptr if there is none).
 const KeySpec* find_scene_key(std::string_view table, std::string_view key);

@@ -136,10 +136,19 @@ const KeySpec* numeric_spec(const std::string& name, std::string_view method) {
   return nullptr;
 }
 
+// internal.NAME.key for a number key of [[internal]] (initial): the spec, else nullptr.
+const KeySpec* internal_number(const std::string& name) {
+  const auto internal = internal_key(name);
+  return internal && internal->spec && numeric(*internal->spec) ? internal->spec : nullptr;
+}
+
 }  // namespace
 
 std::vector<std::string> sweep_keys() {
-  return numeric_key_names();
+  std::vector<std::string> keys = numeric_key_names();
+  for (const KeySpec& spec : internal_keys())
+    if (numeric(spec)) keys.push_back("internal.NAME." + std::string(spec.key));
+  return keys;
 }
 
 SweepGrid::SweepGrid(const std::string& scene_path, const std::vector<std::string>& overrides,
@@ -147,12 +156,14 @@ SweepGrid::SweepGrid(const std::string& scene_path, const std::vector<std::strin
     : path_(scene_path), overrides_(overrides), axes_(std::move(axes)) {
   const auto& names = numeric_key_names();
   for (const SweepAxis& axis : axes_) {
-    if (std::find(names.begin(), names.end(), axis.key()) == names.end()) {
-      std::vector<std::string_view> allowed(names.begin(), names.end());
+    if (std::find(names.begin(), names.end(), axis.key()) == names.end() &&
+        !internal_number(axis.key())) {
+      const std::vector<std::string> keys = sweep_keys();
+      std::vector<std::string_view> allowed(keys.begin(), keys.end());
       throw SceneError("--vary " + axis.key() +
                        ": not a key a sweep can vary (allowed: " + join(allowed) +
-                       "; method.name and force.expression are not numbers: one sweep per value; "
-                       "the [output] keys do not change a summary)");
+                       "; method.name, force.expression and internal.NAME.rate are not numbers: "
+                       "one sweep per value; the [output] keys do not change a summary)");
     }
     for (const SweepAxis& other : axes_)
       if (&other != &axis && other.key() == axis.key())
@@ -177,11 +188,21 @@ SweepGrid::SweepGrid(const std::string& scene_path, const std::vector<std::strin
     throw SceneError(describe(0) + ": " + e.what());
   }
   // A [method] key of another method than the scene's was refused by the reader above.
+  // An internal variable's key: the variable, which the reader found (point 0 set it).
   for (const SweepAxis& axis : axes_) {
-    const KeySpec* spec = numeric_spec(axis.key(), method_name(base_.method));
-    if (!spec)
+    std::ptrdiff_t variable = -1;
+    const KeySpec* spec = internal_number(axis.key());
+    if (spec) {
+      const std::string name = internal_key(axis.key())->name;
+      for (std::size_t i = 0; i < base_.model.internal.size(); ++i)
+        if (base_.model.internal[i].name == name) variable = static_cast<std::ptrdiff_t>(i);
+    } else {
+      spec = numeric_spec(axis.key(), method_name(base_.method));
+    }
+    if (!spec || (spec->set_variable && variable < 0))
       throw std::logic_error("--vary " + axis.key() + ": the reader took a key it has not");
     keys_.push_back(spec);
+    variables_.push_back(variable);
   }
   // The scene reader's checks on plain values (validate.hpp), the same functions the reader calls:
   // every value of every axis against its key's range (a point with the other axes at their first
@@ -233,8 +254,12 @@ void SweepGrid::set_values(std::int64_t i, Scene& scene) const {
   for (std::size_t k = 0; k < axes_.size(); ++k) {
     const double x = axes_[k].value(index(i, k));
     const KeySpec& spec = *keys_[k];
-    spec.set(scene,
-             spec.type == KeyType::integer ? KeyValue(static_cast<std::int64_t>(x)) : KeyValue(x));
+    const KeyValue value =
+        spec.type == KeyType::integer ? KeyValue(static_cast<std::int64_t>(x)) : KeyValue(x);
+    if (variables_[k] >= 0)
+      spec.set_variable(scene.model.internal[static_cast<std::size_t>(variables_[k])], value);
+    else
+      spec.set(scene, value);
   }
 }
 

@@ -43,7 +43,8 @@ class SweepAxis {
   std::vector<double> list_;  // the values of `v1,v2,...`; empty for a range
 };
 
-// The keys --vary accepts: every number a scene reads (method keys only for their method).
+// The keys --vary accepts: every number a scene reads (method keys only for their method), and
+// internal.NAME.initial for each internal variable NAME.
 std::vector<std::string> sweep_keys();
 
 class SweepGrid {
@@ -86,6 +87,7 @@ class SweepGrid {
   std::vector<std::string> overrides_;
   std::vector<SweepAxis> axes_;
   std::vector<const KeySpec*> keys_;  // the scene reader's key of each axis
+  std::vector<std::ptrdiff_t> variables_;  // its internal variable (internal.NAME.key), else -1
   std::vector<std::int64_t> strides_;
   std::int64_t size_ = 1;
   bool grid_varies_ = false;
