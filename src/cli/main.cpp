@@ -1,7 +1,10 @@
 // The `impact` command: a thin layer over the library (scene -> solver -> CSV).
 #include <CLI/CLI.hpp>
+#include <cerrno>
 #include <csignal>
 #include <cstdio>
+#include <cstring>
+#include <iostream>
 #include <new>
 #include <string>
 #include <vector>
@@ -20,6 +23,15 @@
 namespace {
 
 constexpr int kNumericalFailure = 1, kBadInput = 2;
+
+// The exit code of --help or --version once their text is out: a write that failed (a full disk,
+// /dev/full, a closed pipe) is an error, not success with nothing printed.
+int written(int code) {
+  std::cout.flush();
+  if (std::cout && std::fflush(stdout) == 0) return code;
+  std::fprintf(stderr, "impact: error: standard output: write failed: %s\n", std::strerror(errno));
+  return kNumericalFailure;
+}
 
 }  // namespace
 
@@ -92,7 +104,8 @@ int main(int argc, char** argv) {
                     "commit, scene text and --set, the scene as run with its defaults, processor, "
                     "date, summary); not written for standard output, a pipe or a device");
   run_cmd->add_flag("--quiet,-q", run_options.quiet,
-                    "Do not print the progress and summary lines on standard error");
+                    "Do not print the progress and summary lines on standard error (the errors "
+                    "--against exact measures are printed still)");
   run_cmd->footer(
       impact::wrap(
           "Rows are written at t = l h for every output.every-th step l, and always for "
@@ -118,11 +131,11 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
+    return written(app.exit(e));
   } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
+    return written(app.exit(e));
   } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
+    return written(app.exit(e));
   } catch (const CLI::ParseError& e) {
     app.exit(e);
     return kBadInput;

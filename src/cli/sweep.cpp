@@ -106,7 +106,6 @@ int run_sweep(const SweepOptions& o) {
   if (!o.against.empty() && o.against != "exact")
     throw SceneError("--against " + o.against + ": the only reference is 'exact'");
   const bool against = !o.against.empty();
-  const std::vector<Quantity> quantities = parse_summary(o.summary, against);
   const Shard shard = parse_shard(o.shard);
   if (!o.instruction_set.empty()) {
     const auto supported = Ensemble::supported_instruction_sets();
@@ -123,15 +122,20 @@ int run_sweep(const SweepOptions& o) {
   std::vector<SweepAxis> axes;
   for (const std::string& vary : o.varies) axes.emplace_back(vary);
   const SweepGrid grid(o.scene, o.sets, std::move(axes));
+  // The internal variables' columns are the scene's (z_T named after them).
+  const std::vector<Quantity> quantities = parse_summary(o.summary, against, grid.base().model);
 
   const bool to_stdout = o.out.empty() || o.out == "-";
-  if (!to_stdout && same_output(o.out, o.scene))
-    throw OutputError(o.out + ": --out names the scene file itself; give another file name", true);
+  std::vector<NamedPath> outputs{{"--out", o.out}};
+  if (!o.no_provenance)
+    if (const std::string path = sidecar_path(o.out); !path.empty())
+      outputs.push_back(sidecar_named(path, "--out"));
+  check_distinct({{"the scene file", o.scene}}, outputs);
   AtomicFile file(o.out);
   std::optional<AtomicFile> sidecar;  // opened before the run: a bad path is refused at once
   if (!o.no_provenance)
     if (const std::string path = sidecar_path(o.out, file.in_place()); !path.empty())
-      sidecar.emplace(path);
+      open_sidecar(sidecar, path, "--out");
   std::string head;
   if (shard.given)
     head = part_line(shard.k + 1, shard.n, grid.size(),

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 
 #include "impact/output.hpp"
 #include "scene/scene_error.hpp"
@@ -29,15 +30,25 @@ constexpr QuantityInfo kQuantities[] = {
     {Quantity::first_impact_time, "first_impact_time",
      "t_l + (u^l - phi)/|v^l| for the first contact step l; nan without one"},
     {Quantity::rest_time, "rest_time",
-     "t_{l+1} for the first step l of a final contact episode of >= 3 steps; nan without rest"},
+     "where the particle comes to rest for good: for exact and event_driven the time of their "
+     "last stick event (no lift after it), for the time-steppers t_{l+1} for the first step l "
+     "of a final contact episode of >= 3 steps; nan without rest"},
     {Quantity::max_u, "max_u", "largest u^l, t = 0 included"},
     {Quantity::iterations, "iterations", "Newton iterations (fb_newton) or ODE steps (penalty)"},
+    {Quantity::z1_T, "z1_T",
+     "NAME_T: the internal variable NAME ([[internal]]) at the last grid time, one column each"},
+    {Quantity::z2_T, "z2_T", ""},
+    {Quantity::z3_T, "z3_T", ""},
+    {Quantity::z4_T, "z4_T", ""},
     {Quantity::wall_s, "wall_s",
      "wall time of the point's method (a share of its group's in the ensemble), the "
      "reference's left out; not in the default"},
     {Quantity::err_u_sup, "err_u_sup", "max_l |u^l - u(t_l)|, with --against exact"},
     {Quantity::err_v_l1, "err_v_l1", "h sum_l |v^l - v(t_l)|, with --against exact"},
-    {Quantity::err_E_T, "err_E_T", "|E^n - E(T)|, with --against exact"},
+    {Quantity::err_E_T, "err_E_T",
+     "|E^n - E(T)|, E as the channel E defines it, with --against exact"},
+    {Quantity::err_internal_sup, "err_internal_sup",
+     "max over l and the internal variables of |z^l - z(t_l)|, with --against exact"},
     {Quantity::err_first_impact, "err_first_impact",
      "first impact time (first step with N^l > 0) minus the exact one, with --against exact"},
     {Quantity::reference_s, "reference_s",
@@ -46,6 +57,18 @@ constexpr QuantityInfo kQuantities[] = {
 
 bool is_error_measure(Quantity q) {
   return q >= Quantity::err_u_sup;
+}
+
+// The internal variable a quantity is (z1_T..z4_T), if it is one.
+std::optional<std::size_t> internal_quantity(Quantity q) {
+  if (q < Quantity::z1_T || q > Quantity::z4_T) return std::nullopt;
+  return static_cast<std::size_t>(q) - static_cast<std::size_t>(Quantity::z1_T);
+}
+
+// Whether a quantity has a column for this model: NAME_T for its internal variables only.
+bool exists_for(Quantity q, const Model& model) {
+  if (const auto i = internal_quantity(q)) return *i < model.internal.size();
+  return q != Quantity::err_internal_sup || !model.internal.empty();
 }
 
 char* put(char* p, char* end, double x) {
@@ -81,6 +104,11 @@ char* put_quantity(char* p, char* end, Quantity q, const PointOutcome& o, double
       return put(p, end, s.max_u);
     case Quantity::iterations:
       return put(p, end, s.iterations);
+    case Quantity::z1_T:
+    case Quantity::z2_T:
+    case Quantity::z3_T:
+    case Quantity::z4_T:
+      return put(p, end, s.internal_final[*internal_quantity(q)]);
     case Quantity::wall_s:
       return put(p, end, wall_s);
     case Quantity::err_u_sup:
@@ -89,6 +117,8 @@ char* put_quantity(char* p, char* end, Quantity q, const PointOutcome& o, double
       return put(p, end, o.errors->l1_v);
     case Quantity::err_E_T:
       return put(p, end, o.errors->energy_end);
+    case Quantity::err_internal_sup:
+      return put(p, end, o.errors->sup_internal);
     case Quantity::err_first_impact:
       return put(p, end, o.errors->first_impact);
     case Quantity::reference_s:
@@ -101,27 +131,37 @@ char* put_quantity(char* p, char* end, Quantity q, const PointOutcome& o, double
 
 std::string quantities_help() {
   std::string text;
-  for (const auto& q : kQuantities)
-    text += "  " + std::string(q.name) + std::string(19 - q.name.size(), ' ') +
-            std::string(q.help) + "\n";
+  for (const auto& q : kQuantities) {
+    if (q.help.empty()) continue;  // z2_T..z4_T: NAME_T says it for all
+    const std::string name = q.quantity == Quantity::z1_T ? "NAME_T" : std::string(q.name);
+    text += "  " + name + std::string(19 - name.size(), ' ') + std::string(q.help) + "\n";
+  }
   return text;
 }
 
-std::string_view quantity_name(Quantity q) {
-  return kQuantities[static_cast<int>(q)].name;
+std::string quantity_name(Quantity q, const Model& model) {
+  if (const auto i = internal_quantity(q); i && *i < model.internal.size())
+    return model.internal[*i].name + "_T";
+  return std::string(kQuantities[static_cast<int>(q)].name);
 }
 
-std::vector<Quantity> parse_summary(const std::string& list, bool against_exact) {
+std::vector<Quantity> parse_summary(const std::string& list, bool against_exact,
+                                    const Model& model) {
   std::vector<Quantity> quantities;
   if (list.empty()) {
     for (const auto& q : kQuantities)
       if (q.quantity != Quantity::wall_s && q.quantity != Quantity::reference_s &&
-          (against_exact || !is_error_measure(q.quantity)))
+          (against_exact || !is_error_measure(q.quantity)) && exists_for(q.quantity, model))
         quantities.push_back(q.quantity);
     return quantities;
   }
-  std::vector<std::string_view> names;
-  for (const auto& q : kQuantities) names.push_back(q.name);
+  std::vector<std::string> names;
+  std::vector<Quantity> named;
+  for (const auto& q : kQuantities)
+    if (exists_for(q.quantity, model)) {
+      names.push_back(quantity_name(q.quantity, model));
+      named.push_back(q.quantity);
+    }
   for (std::size_t start = 0; start <= list.size();) {
     const std::size_t comma = std::min(list.find(',', start), list.size());
     const std::string name = list.substr(start, comma - start);
@@ -129,11 +169,11 @@ std::vector<Quantity> parse_summary(const std::string& list, bool against_exact)
     const auto it = std::find(names.begin(), names.end(), name);
     if (it == names.end()) {
       std::string allowed;
-      for (auto n : names) allowed += (allowed.empty() ? "" : ", ") + std::string(n);
+      for (const auto& n : names) allowed += (allowed.empty() ? "" : ", ") + n;
       throw SceneError("--summary " + list + ": unknown quantity '" + name +
                        "' (allowed: " + allowed + ")");
     }
-    const Quantity q = kQuantities[it - names.begin()].quantity;
+    const Quantity q = named[static_cast<std::size_t>(it - names.begin())];
     if (std::find(quantities.begin(), quantities.end(), q) != quantities.end())
       throw SceneError("--summary " + list + ": '" + name + "' is listed twice");
     if (is_error_measure(q) && !against_exact)
@@ -146,7 +186,7 @@ std::vector<Quantity> parse_summary(const std::string& list, bool against_exact)
 std::string csv_header(const SweepGrid& grid, const std::vector<Quantity>& quantities) {
   std::string header;
   for (const SweepAxis& axis : grid.axes()) header += axis.key() + ",";
-  for (Quantity q : quantities) header += std::string(quantity_name(q)) + ",";
+  for (Quantity q : quantities) header += quantity_name(q, grid.base().model) + ",";
   return header + "failure\n";
 }
 

@@ -26,21 +26,28 @@ enum class Quantity {
   rest_time,
   max_u,
   iterations,
+  z1_T,  // the internal variables at the last grid time, named after them (NAME_T)
+  z2_T,
+  z3_T,
+  z4_T,
   wall_s,
   err_u_sup,
   err_v_l1,
   err_E_T,
+  err_internal_sup,
   err_first_impact,
   reference_s,
 };
 
 // "name  what it is" lines for --help.
 std::string quantities_help();
-// Parses "rest_time,E_T"; empty text gives the default. Throws SceneError for an unknown name, a
-// name listed twice, or an error measure without --against exact.
-std::vector<Quantity> parse_summary(const std::string& list, bool against_exact);
-// A name, as in the header.
-std::string_view quantity_name(Quantity q);
+// Parses "rest_time,E_T"; empty text gives the default (with the model's internal variables,
+// NAME_T for each, and err_internal_sup with --against exact). Throws SceneError for an unknown
+// name, a name listed twice, or an error measure without --against exact.
+std::vector<Quantity> parse_summary(const std::string& list, bool against_exact,
+                                    const Model& model = {});
+// A name, as in the header: NAME_T for an internal variable of `model`.
+std::string quantity_name(Quantity q, const Model& model = {});
 
 // What one point gave: its summary, or why it failed (a NumericalError's message).
 struct PointResult {

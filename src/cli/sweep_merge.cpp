@@ -64,6 +64,9 @@ void allow_open_files(std::size_t count) {
 }  // namespace
 
 int merge_parts(const std::vector<std::string>& paths, const std::string& out) {
+  std::vector<NamedPath> inputs;
+  for (const std::string& path : paths) inputs.push_back({"the part " + path, path});
+  check_distinct(inputs, {{"--out", out}});
   allow_open_files(paths.size());
   std::vector<Part> parts;
   for (const std::string& path : paths) {

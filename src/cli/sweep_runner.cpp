@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <exception>
 #include <mutex>
+#include <new>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -99,9 +100,15 @@ class Runner {
 
   void run_alone(const Scene& scene, PointResult& result) const {
     const auto start = timed_ ? Clock::now() : Clock::time_point();
+    // A point that fails, whatever the reason (a non-finite step, a force expression or a rate
+    // that is not finite where the run evaluates it, a step whose mean force cannot be resolved),
+    // is a row saying so; the other points go on. Running out of memory is the process's failure,
+    // not the point's: it stops the sweep.
     try {
       result.outcome = summarize(scene, against_);
-    } catch (const NumericalError& e) {
+    } catch (const std::bad_alloc&) {
+      throw;
+    } catch (const std::exception& e) {
       result.failure = e.what();
     }
     // The method's own time: the reference's is reported apart (reference_s).

@@ -96,18 +96,20 @@ std::string check_against(const std::string& against, const Model& model) {
   return reference;
 }
 
+// Every output (the table, its provenance, the figure) against the scene and each other.
 void check_paths(const WorkPrecisionCommandOptions& o) {
-  if (!o.out.empty() && o.out != "-" && same_output(o.out, o.scene))
-    throw OutputError(o.out + ": --out names the scene file itself; give another file name", true);
-  if (o.plot.empty()) return;
-  const auto dot = o.plot.rfind('.');
-  const std::string ext = dot == std::string::npos ? "" : o.plot.substr(dot + 1);
-  if (ext != "png" && ext != "pdf" && ext != "svg")
-    throw SceneError("--plot " + o.plot + ": the figure's name must end in .png, .pdf or .svg");
-  for (const std::string& other : {o.scene, o.out.empty() ? std::string("-") : o.out})
-    if (same_output(o.plot, other))
-      throw OutputError(o.plot + ": --plot names the scene or the table; give another file name",
-                        true);
+  std::vector<NamedPath> outputs{{"--out", o.out}};
+  if (!o.no_provenance)
+    if (const std::string path = sidecar_path(o.out); !path.empty())
+      outputs.push_back(sidecar_named(path, "--out"));
+  if (!o.plot.empty()) {
+    const auto dot = o.plot.rfind('.');
+    const std::string ext = dot == std::string::npos ? "" : o.plot.substr(dot + 1);
+    if (ext != "png" && ext != "pdf" && ext != "svg")
+      throw SceneError("--plot " + o.plot + ": the figure's name must end in .png, .pdf or .svg");
+    outputs.push_back({"--plot", o.plot});
+  }
+  check_distinct({{"the scene file", o.scene}}, outputs);
 }
 
 // Per row: where the two references part by more than kPartingFraction of its sup-norm error.
@@ -222,6 +224,12 @@ CLI::App* add_work_precision_command(CLI::App& app, WorkPrecisionCommandOptions&
   cmd->add_option("--plot", o.plot,
                   "Also draw the figure with gnuplot: .png, .pdf or .svg, every error measure "
                   "against CPU time and against h, log-log, one curve per method");
+  cmd->add_option("--max-steps", o.max_steps,
+                  "The most grid steps T/h one run may take (the finest h decides); beyond, the "
+                  "command refuses to start unless --force")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  cmd->add_flag("--force", o.force, "Run however many steps the finest h asks for");
   cmd->add_flag("--quiet,-q", o.quiet, "Do not print the progress, the orders and the warnings");
   cmd->add_flag("--no-provenance", o.no_provenance,
                 "Do not write OUT.json, the provenance of the table with the orders, beside --out");
@@ -250,13 +258,22 @@ int run_work_precision_command(const WorkPrecisionCommandOptions& o) {
   const Scene& scene = loaded.scene;
   const std::vector<std::string> names = parse_methods(o.methods, scene.model);
   const std::vector<double> steps = parse_steps(o.steps, scene.T);
+  // Each method runs every h --repeat times and once more against the reference: a step count
+  // past what a run can do in hours is most likely a mistyped h.
+  if (const double finest = scene.T / steps.back(); !o.force && finest > o.max_steps)
+    throw SceneError("--h " + (o.steps.empty() ? std::string("(default)") : o.steps) +
+                     ": the finest h = " + round_trip(steps.back()) + " takes T/h = " +
+                     round_trip(std::floor(finest)) + " steps per run, more than --max-steps = " +
+                     round_trip(o.max_steps) + " (each of " + std::to_string(names.size()) +
+                     " methods runs it " + std::to_string(o.repeat + 1) +
+                     " times); give a larger h, or pass --force");
   const std::string reference = check_against(o.against, scene.model);
   check_paths(o);
   AtomicFile file(o.out);
   std::optional<AtomicFile> sidecar, figure;  // opened before the run: a bad path is refused now
   if (!o.no_provenance)
     if (const std::string path = sidecar_path(o.out, file.in_place()); !path.empty())
-      sidecar.emplace(path);
+      open_sidecar(sidecar, path, "--out");
   if (!o.plot.empty()) figure.emplace(o.plot);
 
   const bool to_stdout = o.out.empty() || o.out == "-";

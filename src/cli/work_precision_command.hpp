@@ -21,6 +21,8 @@ struct WorkPrecisionCommandOptions {
   std::string steps;    // --h SPEC; empty: the experiment's 0.1 .. 1e-5
   std::string against;  // empty: the scene's reference
   int repeat = 5;
+  double max_steps = 1e9;  // the most grid steps one run may take without --force
+  bool force = false;
   std::string out, plot;
   bool quiet = false;
   bool no_provenance = false;

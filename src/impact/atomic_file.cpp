@@ -187,6 +187,35 @@ bool same_output(const std::string& a, const std::string& b) {
   return x && y && *x == *y;
 }
 
+bool writes_in_place(const std::string& path) {
+  if (path.empty() || path == "-") return true;
+  const Destination d = destination(path);
+  if (d.proc_link) return true;
+  struct stat info;
+  return stat(d.target.c_str(), &info) == 0 && !S_ISREG(info.st_mode) && !S_ISDIR(info.st_mode);
+}
+
+void check_distinct(const std::vector<NamedPath>& inputs, const std::vector<NamedPath>& outputs) {
+  const auto stream = [](const std::string& path) { return path.empty() || path == "-"; };
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    const NamedPath& out = outputs[i];
+    const std::string shown = stream(out.path) ? "-" : out.path;
+    if (!stream(out.path))
+      for (const NamedPath& in : inputs)
+        if (same_output(out.path, in.path))
+          throw OutputError(shown + ": " + out.what + " names " + in.what + " itself; " + out.fix,
+                            true);
+    for (std::size_t j = 0; j < i; ++j)
+      if (same_output(out.path, outputs[j].path))
+        throw OutputError(shown + ": " + out.what + " and " + outputs[j].what +
+                              " lead to the same output (" +
+                              (stream(outputs[j].path) ? std::string("standard output")
+                                                       : outputs[j].path) +
+                              "); " + out.fix,
+                          true);
+  }
+}
+
 AtomicFile::AtomicFile(const std::string& path) : path_(path) {
   if (path.empty() || path == "-") {
     stream_ = stdout;

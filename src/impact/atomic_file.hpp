@@ -65,6 +65,24 @@ class AtomicFile {
 // (so ./new.csv, sub/../new.csv and an absolute spelling are one).
 bool same_output(const std::string& a, const std::string& b);
 
+// Whether AtomicFile(path) writes in place (standard output, a device, a pipe, /dev/stdout, ...),
+// where no file is created, so that nothing (a provenance sidecar) has a place beside it. Throws
+// OutputError for a loop of symbolic links.
+bool writes_in_place(const std::string& path);
+
+// A file a command reads or writes, as its messages name it: what it is ("--out", "the scene
+// file", "the provenance file of --out (o.csv.json)"), its path, and how to give it another
+// ("give another file name").
+struct NamedPath {
+  std::string what, path, fix = "give another file name";
+};
+// Every output of a command against every input and every other output, as the files they lead
+// to (same_output): throws OutputError (a bad path, exit 2) naming both where one output would
+// replace an input ("--out names the scene file itself") or two outputs are one file or one stream
+// ("--events and --out lead to the same output"). An output to standard output ("-" or "") is a
+// stream, compared with the other outputs only.
+void check_distinct(const std::vector<NamedPath>& inputs, const std::vector<NamedPath>& outputs);
+
 // Writes `text` to `path` through an AtomicFile: the file appears whole or not at all.
 void write_text_file(const std::string& path, const std::string& text);
 
