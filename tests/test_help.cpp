@@ -142,3 +142,15 @@ TEST_CASE("help: run --help lists every key with its default and range, from the
   CHECK_THAT(flat, Contains("iterations Newton or ODE-driver iterations of the steps since the "
                             "previous row (fb_newton, penalty only)"));
 }
+
+TEST_CASE("help and version that cannot be written exit 1", "[help][cli][regression]") {
+  TempDir dir;
+  // A full device takes nothing: the text is lost, and the exit code says so (it used to be 0).
+  for (const std::string args : {"--help", "run --help", "sweep --help", "--version"}) {
+    INFO(args);
+    const Result r = dir.shell("\"$IMPACT\" " + args + " > /dev/full");
+    CHECK(r.code == 1);
+    CHECK_THAT(r.err, Contains("standard output: write failed"));
+    CHECK(dir.run(args).code == 0);
+  }
+}

@@ -1,0 +1,362 @@
+// Every scene feature against every surface that carries a run to a user: the surface handles it
+// (its columns are named as the scene names them, and it agrees with the library) or refuses it
+// with exit 2. The table below says which, cell by cell. A feature the capability table gains, a
+// subcommand or an output option `impact` gains, or a function the Python module gains, without a
+// row or column here, fails the test.
+#include <bit>
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "cli_support.hpp"
+#include "impact/channels.hpp"
+#include "impact/output.hpp"
+#include "impact/run_scene.hpp"
+#include "output_support.hpp"
+#include "scene/read_scene.hpp"
+
+using namespace impact;
+using namespace impact::testing;
+
+namespace {
+
+// The bits of a double, to compare two bit for bit.
+std::uint64_t same_bits_of(double x) {
+  return std::bit_cast<std::uint64_t>(x);
+}
+
+// A new capability is a new column of the capability table (registry.hpp): a feature a scene can
+// ask for, or a property of a method. Either way it needs a row here (kFeatures) or a word in
+// kNotFeatures.
+static_assert(sizeof(Capabilities) == 10,
+              "a capability was added or removed: give it a row in kFeatures of "
+              "test_surface_matrix.cpp (or say in kNotFeatures why it is none)");
+[[maybe_unused]] constexpr const char* kNotFeatures =
+    "iterations_channel and scheme_force_channel are channels a method writes (the run rows "
+    "check them through the CSV); reference, energy_bound and exact_events are properties of a "
+    "method, not of a scene";
+
+struct Feature {
+  std::string name, scene;
+};
+
+const std::string kHead =
+    "[initial]\nu0 = 0.3\nv0 = 0.0\n[time]\nT = 0.5\nh = 1e-3\n[method]\nname = \"direct\"\n";
+
+const std::vector<Feature> kFeatures = {
+    {"constant f", kHead + "[force]\nf = -9.81\n[output]\nchannels = [\"u\", \"v\", \"N\", \"E\"]\n"},
+    {"COR", kHead + "[force]\nf = -9.81\n[floor]\ncor = 0.8\n"
+                    "[output]\nchannels = [\"u\", \"v\", \"N\", \"E\", \"N_scheme\"]\n"},
+    {"harmonic", kHead + "[force]\nf = -9.81\namplitude = 5.0\nomega = 20.0\n[floor]\ncor = 0.8\n"
+                         "[output]\nchannels = [\"u\", \"v\", \"N\", \"E\"]\n"},
+    {"expression of t", kHead + "[force]\nexpression = \"-9.81 + 5 * sin(20 * t)\"\n"
+                                "[output]\nchannels = [\"u\", \"v\", \"N\", \"E\"]\n"},
+    {"state force", kHead + "[force]\nexpression = \"-9.81 - 20 * (u - 0.3) - 0.5 * v\"\n"
+                            "[floor]\ncor = 0.8\n[output]\nchannels = [\"u\", \"v\", \"N\", \"E\"]\n"},
+    {"internal variables",
+     kHead + "[force]\nexpression = \"-9.81 + 5 * beta - 0.5 * v\"\n[floor]\ncor = 0.8\n"
+             "[output]\nchannels = [\"u\", \"v\", \"N\", \"E\", \"beta\", \"D\"]\n"
+             "[[internal]]\nname = \"beta\"\ninitial = 1.0\nrate = \"-2 * beta + u\"\n"
+             "[[internal]]\nname = \"D\"\ninitial = 0.0\nrate = \"v^2\"\n"},
+    // The two-mass chain is a library model: no scene key gives it, so every surface that reads a
+    // scene refuses one that asks for it.
+    {"the chain", kHead + "[chain]\nm1 = 1.0\n"},
+};
+
+enum class Expect { handles, refuses };
+
+struct Surface {
+  std::string name;
+  // Runs the surface on the scene in dir/s.toml; returns "" when it handled the feature right,
+  // "refused" when it exited 2 naming the scene, else what went wrong.
+  std::function<std::string(const TempDir&, const Scene*)> check;
+};
+
+// The library's rows of a scene (run_scene, as `impact run` calls it), formatted as the CSV.
+std::string library_csv(const Scene& scene, std::vector<Event>* events = nullptr) {
+  AnyStepper stepper = make_stepper(scene);
+  std::string text = "t";
+  for (Channel c : scene.output.channels) text += "," + std::string(channel_name(c, scene.model));
+  text += "\n";
+  RunOutputs outputs;
+  outputs.rows = [&](const OutputRow& row) {
+    text += round_trip(scene.grid.t(row.l));
+    for (Channel c : scene.output.channels)
+      text += "," + (c == Channel::iterations ? std::to_string(row.iterations)
+                                              : round_trip(channel_value(row, c)));
+    text += "\n";
+  };
+  if (events) outputs.events = [&](const Event& e) { events->push_back(e); };
+  run_scene(scene, stepper, outputs);
+  return text;
+}
+
+std::string refused_or(const Result& r, const std::string& what) {
+  if (r.code == 2 && r.err.find("s.toml") != std::string::npos) return "refused";
+  return what + " (exit " + std::to_string(r.code) + "): " + r.err;
+}
+
+std::string run_csv(const TempDir& dir, const Scene* scene) {
+  const Result r = dir.run("run s.toml -q -o run.csv");
+  if (r.code != 0 || !scene) return refused_or(r, "impact run");
+  const std::string csv = slurp(dir / "run.csv");
+  return csv == library_csv(*scene) ? "" : "the CSV differs from the library's rows";
+}
+
+std::string events(const TempDir& dir, const Scene* scene) {
+  const Result r = dir.run("run s.toml -q -o run.csv --events ev.csv");
+  if (r.code != 0 || !scene) return refused_or(r, "impact run --events");
+  std::vector<Event> library;
+  library_csv(*scene, &library);
+  std::string want = "t,kind,v_before,v_after";
+  for (const InternalVariable& z : scene->model.internal) want += "," + z.name;
+  want += "\n";
+  for (const Event& e : library) {
+    want += round_trip(e.t) + "," + std::string(event_name(e.kind)) + "," +
+            round_trip(e.v_before) + "," + round_trip(e.v_after);
+    for (std::size_t i = 0; i < scene->model.internal.size(); ++i)
+      want += "," + round_trip(e.internal[i]);
+    want += "\n";
+  }
+  return slurp(dir / "ev.csv") == want ? "" : "the events differ from the library's";
+}
+
+std::string sweep(const TempDir& dir, const Scene* scene) {
+  const Result r = dir.run("sweep s.toml -q -o sweep.csv --vary time.h=1e-3,5e-4");
+  if (r.code != 0 || !scene) return refused_or(r, "impact sweep");
+  const Table table = read_table(slurp(dir / "sweep.csv"));
+  for (std::size_t p = 0; p < 2; ++p) {
+    Scene point = *scene;
+    point.grid = Grid::covering(point.T, p == 0 ? 1e-3 : 5e-4);
+    const PointSummary s = summarize(point, false).summary;
+    std::map<std::string, double> want{{"u_T", s.final.u}, {"v_T", s.final.v},
+                                       {"E_T", s.energy_final}};
+    for (std::size_t i = 0; i < scene->model.internal.size(); ++i)
+      want[scene->model.internal[i].name + "_T"] = s.internal_final[i];
+    for (const auto& [name, value] : want) {
+      const auto at = std::find(table.columns.begin(), table.columns.end(), name);
+      if (at == table.columns.end()) return "no column " + name;
+      if (same_bits_of(table.rows[p][static_cast<std::size_t>(at - table.columns.begin())]) !=
+          same_bits_of(value))
+        return name + " differs from the library's at point " + std::to_string(p + 1);
+    }
+  }
+  return "";
+}
+
+std::string against(const TempDir& dir, const Scene* scene) {
+  const Result r = dir.run("run s.toml -q -o run.csv --against exact");
+  if (r.code != 0 || !scene) return refused_or(r, "impact run --against exact");
+  AnyStepper stepper = make_stepper(*scene);
+  RunOutputs outputs;
+  outputs.against_exact = true;
+  const ErrorNorms e = *run_scene(*scene, stepper, outputs).errors;
+  // --quiet leaves the errors, which were asked for.
+  for (const double x : {e.sup_u, e.l1_v, e.energy_end})
+    if (r.err.find("= " + round_trip(x)) == std::string::npos)
+      return "the errors printed differ from the library's: " + r.err;
+  if (!scene->model.internal.empty() &&
+      r.err.find("sup|z - z_exact| = " + round_trip(e.sup_internal)) == std::string::npos)
+    return "no sup|z - z_exact| as the library measures it: " + r.err;
+  return "";
+}
+
+// The value of a JSON string member in the sidecar (escapes: \n \" \\ \t \uXXXX below 0x80).
+std::string json_member(const std::string& json, const std::string& key) {
+  const std::size_t at = json.find("\"" + key + "\": \"");
+  if (at == std::string::npos) return {};
+  std::string out;
+  for (std::size_t i = at + key.size() + 5; i < json.size() && json[i] != '"'; ++i) {
+    if (json[i] != '\\') {
+      out += json[i];
+      continue;
+    }
+    const char c = json[++i];
+    if (c == 'n') out += '\n';
+    else if (c == 't') out += '\t';
+    else if (c == 'u') out += static_cast<char>(std::stoi(json.substr(i + 1, 4), nullptr, 16)), i += 4;
+    else out += c;
+  }
+  return out;
+}
+
+std::string sidecar_rerun(const TempDir& dir, const Scene* scene) {
+  const Result r = dir.run("run s.toml -q -o run.csv");
+  if (r.code != 0 || !scene) return refused_or(r, "impact run");
+  dir.write("rerun.toml", json_member(slurp(dir / "run.csv.json"), "scene_as_run"));
+  const Result again = dir.run("run rerun.toml -q --no-provenance -o rerun.csv");
+  if (again.code != 0) return "scene_as_run does not run: " + again.err;
+  return slurp(dir / "rerun.csv") == slurp(dir / "run.csv") ? ""
+                                                            : "scene_as_run reruns other bytes";
+}
+
+std::string plot(const TempDir& dir, const Scene* scene) {
+  if (!scene) return refused_or(dir.run("run s.toml -q -o run.csv"), "impact run");
+  for (const std::string& args :
+       {std::string("run s.toml -q -o run.csv --events ev.csv"),
+        std::string("sweep s.toml -q -o sweep.csv --vary time.h=1e-3,5e-4")})
+    if (const Result r = dir.run(args); r.code != 0) return "could not write what to draw: " + r.err;
+  for (const std::string& what : {"run.csv --events ev.csv", "ev.csv", "sweep.csv"}) {
+    std::filesystem::remove(dir / "p.svg");
+    const Result r = dir.run("plot " + what + " -o p.svg");
+    if (r.code != 0 || !std::filesystem::exists(dir / "p.svg"))
+      return "impact plot " + what + " (exit " + std::to_string(r.code) + "): " + r.err;
+  }
+  return "";
+}
+
+std::string work_precision(const TempDir& dir, const Scene* scene) {
+  const Result r = dir.run(
+      "work-precision s.toml --methods direct --h 1e-2,5e-3 --repeat 1 -q -o wp.csv "
+      "--no-provenance");
+  if (r.code != 0 || !scene) return refused_or(r, "impact work-precision");
+  return read_table(slurp(dir / "wp.csv")).rows.size() == 2 ? "" : "not one row per h";
+}
+
+// The Python module of this build (IMPACT_BUILD_DIR/python), its arrays against the CLI's CSV bit
+// for bit; empty when the module is not built (the sanitizer build leaves it out).
+std::string python(const TempDir& dir, const Scene* scene, const std::string& call) {
+  const std::string module = std::string(IMPACT_BUILD_DIR) + "/python";
+  bool built = false;
+  if (std::filesystem::exists(module))
+    for (const auto& e : std::filesystem::directory_iterator(module))
+      built = built || e.path().filename().string().starts_with("impact");
+  if (!built) return "not built";
+  const std::string script =
+      "import csv, sys, numpy as np, impact\n"
+      "rows = list(csv.reader(open(sys.argv[1]))) if sys.argv[1] != '-' else [['t']]\n"
+      "t = np.array([float(row[0]) for row in rows[1:]])\n"
+      "try:\n"
+      "    r = impact." + call + "\n"
+      "except impact.SceneError as e:\n"
+      "    print('refused:', e); sys.exit(2)\n"
+      "for k, name in enumerate(rows[0]):\n"
+      "    want = [row[k] for row in rows[1:]]\n"
+      "    got = r[name]\n"
+      "    if name == 'kind' or name == 'failure':\n"
+      "        ok = [str(x) for x in got] == want\n"
+      "    else:\n"
+      "        w = np.array([float(x) if x != '' else np.nan for x in want])\n"
+      "        ok = np.array_equal(np.asarray(got, dtype=np.float64).view(np.uint64), w.view(np.uint64))\n"
+      "    if not ok: print('column', name, 'differs'); sys.exit(1)\n";
+  dir.write("check.py", script);
+  const std::string csv = !scene                      ? "-"
+                          : call.starts_with("events") ? "ev.csv"
+                          : call.starts_with("sweep")  ? "sweep.csv"
+                          : call.starts_with("exact")  ? "reference.csv"
+                                                       : "run.csv";
+  const Result r = dir.shell("PYTHONPATH=" + quote(module) + " /usr/bin/python3 check.py " + csv);
+  if (r.code == 2 && r.out.starts_with("refused")) return scene ? "refused a scene the CLI ran" : "refused";
+  return r.code == 0 ? "" : "python " + call + ": " + r.out + r.err;
+}
+
+const std::vector<Surface> kSurfaces = {
+    {"impact run (CSV)", run_csv},
+    {"impact run --events", events},
+    {"impact sweep", sweep},
+    {"impact run --against exact", against},
+    {"the sidecar's scene_as_run, rerun", sidecar_rerun},
+    {"impact plot", plot},
+    {"impact work-precision", work_precision},
+    {"impact.run (Python)",
+     [](const TempDir& d, const Scene* s) {
+       if (s) events(d, s);  // writes run.csv
+       return python(d, s, "run('s.toml')");
+     }},
+    {"impact.events (Python)",
+     [](const TempDir& d, const Scene* s) {
+       if (s) events(d, s);  // writes ev.csv
+       return python(d, s, "events('s.toml')");
+     }},
+    {"impact.sweep (Python)",
+     [](const TempDir& d, const Scene* s) {
+       if (s) sweep(d, s);  // writes sweep.csv
+       return python(d, s, "sweep('s.toml', vary={'time.h': [1e-3, 5e-4]})");
+     }},
+    {"impact.exact (Python)",
+     [](const TempDir& d, const Scene* s) {
+       if (s) {  // the scene's reference as impact run writes it, u, v and z at the grid times
+         std::string channels = "[\"u\",\"v\"";
+         for (const InternalVariable& z : s->model.internal) channels += ",\"" + z.name + "\"";
+         const Result r = d.run("run s.toml -q --no-provenance -o reference.csv --set method.name=" +
+                                std::string(reference_for(s->model).name) +
+                                " --set 'output.channels=" + channels + "]'");
+         if (r.code != 0) return "the reference does not run: " + r.err;
+       }
+       return python(d, s, "exact('s.toml', t)");
+     }},
+};
+
+// Every cell: the chain is refused everywhere; every other feature is handled everywhere.
+Expect expected(const Feature& feature, const Surface&) {
+  return feature.name == "the chain" ? Expect::refuses : Expect::handles;
+}
+
+}  // namespace
+
+TEST_CASE("surface matrix: every feature on every surface is handled as the library computes it, "
+          "or refused with exit 2",
+          "[surfaces][cli][regression]") {
+  for (const Feature& feature : kFeatures)
+    for (const Surface& surface : kSurfaces) {
+      TempDir dir;
+      dir.write("s.toml", feature.scene);
+      std::optional<Scene> scene;
+      if (expected(feature, surface) == Expect::handles) scene = load_scene(dir / "s.toml");
+      INFO(feature.name << " on " << surface.name);
+      const std::string outcome = surface.check(dir, scene ? &*scene : nullptr);
+      if (outcome == "not built") {
+        WARN(surface.name << ": the Python module is not in this build; not checked");
+        continue;
+      }
+      CHECK(outcome == (expected(feature, surface) == Expect::handles ? "" : "refused"));
+    }
+}
+
+TEST_CASE("surface matrix: every subcommand, output option and Python function has a column",
+          "[surfaces][cli]") {
+  TempDir dir;
+  const auto covered = [&](const std::string& name) {
+    for (const Surface& s : kSurfaces)
+      if (s.name.find(name) != std::string::npos) return true;
+    return false;
+  };
+  // The subcommands `impact --help` lists.
+  const Result help = dir.run("--help");
+  REQUIRE(help.code == 0);
+  const std::size_t list = help.out.find("SUBCOMMANDS:");
+  REQUIRE(list != std::string::npos);
+  std::istringstream lines(help.out.substr(list));
+  std::string line;
+  std::getline(lines, line);
+  int subcommands = 0;
+  while (std::getline(lines, line) && !line.empty()) {
+    const std::string name = line.substr(line.find_first_not_of(' '), line.find(' ', 2) - 2);
+    if (name.empty()) continue;
+    ++subcommands;
+    CHECK(covered("impact " + name));
+  }
+  CHECK(subcommands >= 4);
+  // What `impact run` can write: --out (the CSV), --events, --against's errors, the sidecar.
+  const Result run = dir.run("run --help");
+  for (const std::string& option : {"--events", "--against"}) {
+    CHECK(run.out.find(option) != std::string::npos);
+    CHECK(covered(option));
+  }
+  // The Python module's functions.
+  const std::string module = std::string(IMPACT_BUILD_DIR) + "/python";
+  const Result py = dir.shell(
+      "PYTHONPATH=" + quote(module) +
+      " /usr/bin/python3 -c \"import impact, inspect; print(' '.join(n for n, f in "
+      "vars(impact).items() if not n.startswith('_') and callable(f) and not inspect.isclass(f)))\"");
+  if (py.code != 0) {
+    WARN("the Python module is not in this build: its functions are not checked");
+    return;
+  }
+  std::istringstream names(py.out);
+  for (std::string name; names >> name;)
+    CHECK(covered("impact." + name + " "));
+}
