@@ -45,8 +45,13 @@ inline LibraryRun library_run(const std::string& path, const std::vector<std::st
   LibraryRun run{loaded.scene, {}, {}, {}};
   const Scene& scene = run.scene;
   run.steps.reserve(static_cast<std::size_t>(scene.grid.steps + 1));
-  WorkEnergy work(scene.model, scene.initial, scene.grid.h);
-  const EventSink sink = [&](const Event& e) { run.events.push_back(e); };
+  // A method that follows the motion takes a flight's work from its events (work_energy.hpp).
+  WorkEnergy work(scene.model, scene.initial, scene.grid.h,
+                  method_info(scene.method).can.exact_events);
+  const EventSink sink = [&](const Event& e) {
+    run.events.push_back(e);
+    work.event(e);
+  };
   std::optional<EventLog> log;
   if (!attach_event_sink(loaded.stepper, sink)) log.emplace(scene.model, scene.grid.h, sink);
   simulate(loaded.stepper, scene.initial, scene.grid,

@@ -141,7 +141,7 @@ inline Properties run_properties(const Scene& scene, double extra_allowance = 0,
              if (l == 0) return;
              p.max_u = std::fmax(p.max_u, std::fabs(s.u));
              p.max_v = std::fmax(p.max_v, std::fabs(s.v));
-             const double N = info.contact_force, gap = s.u - m.phi;
+             const double N = scheme_force(info), gap = s.u - m.phi;
              p.impulse += scene.grid.h * N;
              double allowance =
                  roundoff(m, scene.grid.t(l), scene.grid.h, before, s, N, p.max_u, p.max_v) +

@@ -74,7 +74,8 @@ TEST_CASE("help: --help is short and points at run --help, which lists the optio
   const Result top = dir.run("--help");
   CHECK(top.code == 0);
   CHECK_THAT(top.out, Contains("impact run --help") && Contains("run") && Contains("Exit codes"));
-  // Four subcommands (run, sweep, plot, work-precision), the options and the exit codes: one screen.
+  // Four subcommands (run, sweep, plot, work-precision), the options and the exit codes: one
+  // screen.
   CHECK(std::count(top.out.begin(), top.out.end(), '\n') <= 24);
   check_width(top.out);
   const Result run = dir.run("run --help");

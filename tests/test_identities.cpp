@@ -134,9 +134,10 @@ Identities identities(const Scene& scene, const Table& every_1, const Table& eve
 
 }  // namespace
 
-TEST_CASE("identities: h sum N is the floor's momentum and E is conserved in flight, for every "
-          "method and force, at every = 1 and 7",
-          "[identities][cli][regression]") {
+TEST_CASE(
+    "identities: h sum N is the floor's momentum and E is conserved in flight, for every "
+    "method and force, at every = 1 and 7",
+    "[identities][cli][regression]") {
   TempDir dir;
   for (const MethodInfo& method : methods())
     for (const Force& force : kForces)

@@ -73,7 +73,8 @@ TEST_CASE("internal keys: --set, --unset and --vary reach a variable as internal
   REQUIRE(dir.run("run s.toml -q --no-provenance -o rows.csv --set internal.z.initial=2").code ==
           0);
   const Table point = read_table(slurp(dir / "rows.csv"));
-  CHECK(same_bits_of(first(point, "z", point.rows.size() - 1)) == same_bits_of(first(rows, "z_T", 1)));
+  CHECK(same_bits_of(first(point, "z", point.rows.size() - 1)) ==
+        same_bits_of(first(rows, "z_T", 1)));
 }
 
 TEST_CASE("internal keys: a key or a variable that is not there is refused, naming what is",
@@ -89,8 +90,9 @@ TEST_CASE("internal keys: a key or a variable that is not there is refused, nami
   CHECK_FAILS_CLEANLY(dir, run + "--set internal.z.initial=nan", 2,
                       Contains("--set internal.z.initial=nan") && Contains("finite"));
   // --unset internal.name (a key of the table, not a variable) says which variables there are.
-  CHECK_FAILS_CLEANLY(dir, run + "--unset internal.name", 2,
-                      Contains("no internal variable 'name'") && Contains("its internal variables: z"));
+  CHECK_FAILS_CLEANLY(
+      dir, run + "--unset internal.name", 2,
+      Contains("no internal variable 'name'") && Contains("its internal variables: z"));
   CHECK_FAILS_CLEANLY(dir, run + "--unset internal.z.rate", 2,
                       Contains("needs name, initial and rate"));
   // Without the variable the force no longer parses: the message names the token.
@@ -121,24 +123,28 @@ TEST_CASE("internal keys: a rate or a force is one value that only reads, never 
   refused("-9.81 + z", "(b = 3) + z", "assigns to b");
   refused("(z = 0) - 9.81", "-z", "assigns to z");
   // Comparisons are not assignments.
-  dir.write("s.toml", kHead + "[[internal]]\nname = \"z\"\ninitial = 1.0\nrate = \"(t <= 0.1) "
-                              "- (t >= 0.1) + (t == 0) - (t != 0)\"\n");
+  dir.write("s.toml", kHead +
+                          "[[internal]]\nname = \"z\"\ninitial = 1.0\nrate = \"(t <= 0.1) "
+                          "- (t >= 0.1) + (t == 0) - (t != 0)\"\n");
   CHECK(dir.run("run s.toml -q -o out.csv").code == 0);
 }
 
 TEST_CASE("internal keys: a name the output or muparser has taken is refused",
           "[internal][cli][regression]") {
   TempDir dir;
-  for (const std::string name : {"N", "E", "iterations", "N_scheme", "kind", "v_before", "v_after"}) {
+  for (const std::string name :
+       {"N", "E", "iterations", "N_scheme", "kind", "v_before", "v_after"}) {
     INFO(name);
-    dir.write("s.toml", kHead + "[[internal]]\nname = \"" + name + "\"\ninitial = 7.0\nrate = \"0\"\n");
+    dir.write("s.toml",
+              kHead + "[[internal]]\nname = \"" + name + "\"\ninitial = 7.0\nrate = \"0\"\n");
     CHECK_FAILS_CLEANLY(dir, "run s.toml -o out.csv", 2,
                         Contains("internal variable \"" + name + "\"") &&
                             Contains("taken by a column of the output"));
   }
   for (const std::string name : {"_pi", "_e", "sin", "pi", "t"}) {
     INFO(name);
-    dir.write("s.toml", kHead + "[[internal]]\nname = \"" + name + "\"\ninitial = 7.0\nrate = \"0\"\n");
+    dir.write("s.toml",
+              kHead + "[[internal]]\nname = \"" + name + "\"\ninitial = 7.0\nrate = \"0\"\n");
     CHECK_FAILS_CLEANLY(dir, "run s.toml -o out.csv", 2, Contains("the name is taken"));
   }
 }
@@ -153,23 +159,26 @@ TEST_CASE("internal keys: the force and the rates are evaluated where the run st
   // inf at u = 0.
   dir.write("s.toml", head + "[force]\nexpression = \"-9.81 + 0.01 / u\"\n");
   CHECK(dir.run("run s.toml -q -o out.csv").code == 0);
-  dir.write("s.toml", head + "[force]\nexpression = \"-9.81 + z\"\n[[internal]]\nname = "
-                             "\"z\"\ninitial = 0.0\nrate = \"1 / u\"\n");
+  dir.write("s.toml", head +
+                          "[force]\nexpression = \"-9.81 + z\"\n[[internal]]\nname = "
+                          "\"z\"\ninitial = 0.0\nrate = \"1 / u\"\n");
   CHECK(dir.run("run s.toml -q -o out.csv").code == 0);
   // Not finite at the initial state: refused there, naming it.
   dir.write("s.toml", head + "[force]\nexpression = \"-9.81 + 1 / (u - 2)\"\n");
   CHECK_FAILS_CLEANLY(dir, "run s.toml -o x.csv", 2,
                       Contains("force.expression") && Contains("the initial state: u = 2"));
-  dir.write("s.toml", head + "[force]\nexpression = \"-9.81 + z\"\n[[internal]]\nname = "
-                             "\"z\"\ninitial = 0.0\nrate = \"1 / (u - 2)\"\n");
+  dir.write("s.toml", head +
+                          "[force]\nexpression = \"-9.81 + z\"\n[[internal]]\nname = "
+                          "\"z\"\ninitial = 0.0\nrate = \"1 / (u - 2)\"\n");
   CHECK_FAILS_CLEANLY(dir, "run s.toml -o x.csv", 2,
                       Contains("rate of internal variable \"z\"") && Contains("initial state"));
   // Not finite where the run gets to: exit 1 naming t (the particle falls below u = 1.5).
   dir.write("s.toml", head + "[force]\nexpression = \"-9.81 + sqrt(u - 1.5)\"\n");
   CHECK_FAILS_CLEANLY(dir, "run s.toml -o x.csv --set time.T=1", 1, Contains("at t = "));
   // An initial value as u0 takes it: an integer beyond 2^53 is the double nearest it.
-  dir.write("s.toml", head + "[force]\nexpression = \"-9.81 + 0 * z\"\n[[internal]]\nname = "
-                             "\"z\"\ninitial = 9007199254740993\nrate = \"0\"\n");
+  dir.write("s.toml", head +
+                          "[force]\nexpression = \"-9.81 + 0 * z\"\n[[internal]]\nname = "
+                          "\"z\"\ninitial = 9007199254740993\nrate = \"0\"\n");
   REQUIRE(dir.run("run s.toml -q --no-provenance -o out.csv").code == 0);
   CHECK(first(read_table(slurp(dir / "out.csv")), "z") == 9007199254740992.0);
 }

@@ -78,9 +78,10 @@ TEST_CASE("scene: the method and its keys are checked", "[scene]") {
 TEST_CASE("scene: output channels and decimation are checked", "[scene]") {
   CHECK_SCENE_ERROR(parse(kBase + "[output]\nchannels = [\"u\", \"iterations\"]\n"),
                     Contains("scene.toml") && Contains("output.channels = 'iterations'") &&
-                        Contains("method 'direct'") && Contains("allowed: u, v, N, E)"));
-  CHECK_SCENE_ERROR(parse(kBase + "[output]\nchannels = [\"u\", \"w\"]\n"),
-                    Contains("output.channels = 'w'") && Contains("allowed: u, v, N, E)"));
+                        Contains("method 'direct'") && Contains("allowed: u, v, N, E, N_scheme)"));
+  CHECK_SCENE_ERROR(
+      parse(kBase + "[output]\nchannels = [\"u\", \"w\"]\n"),
+      Contains("output.channels = 'w'") && Contains("allowed: u, v, N, E, N_scheme)"));
   CHECK_SCENE_ERROR(
       parse(kBase + "[output]\nchannels = [\"u\", \"v\", \"u\"]\n"),
       Contains("scene.toml") && Contains("output.channels = 'u'") && Contains("listed twice"));

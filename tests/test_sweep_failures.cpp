@@ -42,8 +42,9 @@ TEST_CASE("sweep failures: a point that fails with any error is a row, the other
   const std::vector<Case> cases = {
       // A force expression that is nan past t = 0.5: a std::runtime_error, not a NumericalError
       // (it used to end the sweep with a header and one row, and no file).
-      {"a force that is not finite", head + "[force]\nexpression = \"t < 0.5 ? -9.81 : sqrt(-1)\"\n",
-       "time.T=0.4,1", "nan at t = "},
+      {"a force that is not finite",
+       head + "[force]\nexpression = \"t < 0.5 ? -9.81 : sqrt(-1)\"\n", "time.T=0.4,1",
+       "nan at t = "},
       // z' = z^2 u blows up at t = 1/u0: inside T for u0 = 3, not for 0.1.
       {"a rate that blows up",
        head + "[force]\nexpression = \"-9.81 + 0 * z\"\n[[internal]]\nname = \"z\"\ninitial = "

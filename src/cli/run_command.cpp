@@ -31,7 +31,8 @@ constexpr std::int64_t kCheckEvery = std::int64_t{1} << 16;
 // the files they lead to (check_distinct).
 void check_paths(const RunOptions& o) {
   std::vector<NamedPath> outputs{{"--out", o.out}};
-  if (!o.events.empty()) outputs.push_back({"--events", o.events, "give the events a file of their own"});
+  if (!o.events.empty())
+    outputs.push_back({"--events", o.events, "give the events a file of their own"});
   if (!o.no_provenance)
     if (const std::string sidecar = sidecar_path(o.out); !sidecar.empty())
       outputs.push_back(sidecar_named(sidecar, "--out"));

@@ -64,9 +64,6 @@ void allow_open_files(std::size_t count) {
 }  // namespace
 
 int merge_parts(const std::vector<std::string>& paths, const std::string& out) {
-  std::vector<NamedPath> inputs;
-  for (const std::string& path : paths) inputs.push_back({"the part " + path, path});
-  check_distinct(inputs, {{"--out", out}});
   allow_open_files(paths.size());
   std::vector<Part> parts;
   for (const std::string& path : paths) {
@@ -98,6 +95,10 @@ int merge_parts(const std::vector<std::string>& paths, const std::string& out) {
     reject(parts.back().path, "shard " + std::to_string(parts.size() + 1) + " of " +
                                   std::to_string(first.n) + " is missing");
 
+  // The merged file may not replace a part (as files: a link to one is one).
+  std::vector<NamedPath> inputs;
+  for (const std::string& path : paths) inputs.push_back({"the part " + path, path});
+  check_distinct(inputs, {{"--out", out}});
   AtomicFile file(out);
   std::fputs((parts.front().header + "\n").c_str(), file.stream());
   std::string row;

@@ -262,11 +262,11 @@ int run_work_precision_command(const WorkPrecisionCommandOptions& o) {
   // past what a run can do in hours is most likely a mistyped h.
   if (const double finest = scene.T / steps.back(); !o.force && finest > o.max_steps)
     throw SceneError("--h " + (o.steps.empty() ? std::string("(default)") : o.steps) +
-                     ": the finest h = " + round_trip(steps.back()) + " takes T/h = " +
-                     round_trip(std::floor(finest)) + " steps per run, more than --max-steps = " +
-                     round_trip(o.max_steps) + " (each of " + std::to_string(names.size()) +
-                     " methods runs it " + std::to_string(o.repeat + 1) +
-                     " times); give a larger h, or pass --force");
+                     ": the finest h = " + round_trip(steps.back()) +
+                     " takes T/h = " + round_trip(std::floor(finest)) +
+                     " steps per run, more than --max-steps = " + round_trip(o.max_steps) +
+                     " (each of " + std::to_string(names.size()) + " methods runs it " +
+                     std::to_string(o.repeat + 1) + " times); give a larger h, or pass --force");
   const std::string reference = check_against(o.against, scene.model);
   check_paths(o);
   AtomicFile file(o.out);

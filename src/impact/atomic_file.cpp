@@ -207,12 +207,11 @@ void check_distinct(const std::vector<NamedPath>& inputs, const std::vector<Name
                             true);
     for (std::size_t j = 0; j < i; ++j)
       if (same_output(out.path, outputs[j].path))
-        throw OutputError(shown + ": " + out.what + " and " + outputs[j].what +
-                              " lead to the same output (" +
-                              (stream(outputs[j].path) ? std::string("standard output")
-                                                       : outputs[j].path) +
-                              "); " + out.fix,
-                          true);
+        throw OutputError(
+            shown + ": " + out.what + " and " + outputs[j].what + " lead to the same output (" +
+                (stream(outputs[j].path) ? std::string("standard output") : outputs[j].path) +
+                "); " + out.fix,
+            true);
   }
 }
 

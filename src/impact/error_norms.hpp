@@ -192,7 +192,7 @@ class ErrorObserver {
 
   ReferenceSolution exact_;
   double initial_energy_;  // E(0), work_energy.hpp
-  std::size_t internal_;  // the model's internal variables
+  std::size_t internal_;   // the model's internal variables
   Model model_;
   Grid grid_;
   State previous_;

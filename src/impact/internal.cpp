@@ -66,8 +66,8 @@ void check_internal_variables(const Model& model) {
                                   "and _e and its functions are)");
     // The CSV of the rows writes a column per channel and the events file t, kind, v_before and
     // v_after, each followed by the internal variables' columns.
-    for (std::string_view column : {"N", "E", "iterations", "N_scheme", "kind", "v_before",
-                                    "v_after"})
+    for (std::string_view column :
+         {"N", "E", "iterations", "N_scheme", "kind", "v_before", "v_after"})
       if (z.name == column)
         throw std::invalid_argument(quoted +
                                     ": the name is taken by a column of the output (the channels "
@@ -98,8 +98,7 @@ void refuse_assignment(const std::string& text, const std::string& reads) {
       --start;
     const std::string name = start < end ? text.substr(start, end - start) : "a value";
     throw std::invalid_argument("the expression assigns to " + name + " with '=' at position " +
-                                std::to_string(i + 1) + "; " + reads +
-                                " (to compare, write '==')");
+                                std::to_string(i + 1) + "; " + reads + " (to compare, write '==')");
   }
 }
 

@@ -270,7 +270,8 @@ std::optional<Contact> OdeLaw::search(double horizon, long& budget) {
   if (!ode_ok_ || out_of_steps_) budget = 0;
   // A search that spent its budget on ODE steps did not stall on a contact: rk8pd's error control
   // kept its steps that short (a stiff rate or force).
-  if (budget <= 0 && ode_ok_ && !out_of_steps_ && 2 * (ode_steps_ - ode_steps_before) >= budget_given) {
+  if (budget <= 0 && ode_ok_ && !out_of_steps_ &&
+      2 * (ode_steps_ - ode_steps_before) >= budget_given) {
     stiff_ = true;
     stiff_from_ = from;
   }

@@ -150,7 +150,7 @@ class OdeLaw {
   bool departing_ = false, at_crossing_ = false;
   long ode_steps_ = 0, ode_step_limit_ = std::numeric_limits<long>::max();
   bool ode_ok_ = true, out_of_steps_ = false;
-  bool stiff_ = false;      // a search spent its budget on ODE steps, from stiff_from_ on
+  bool stiff_ = false;  // a search spent its budget on ODE steps, from stiff_from_ on
   double stiff_from_ = 0;
   int failed_status_ = 0;  // the GSL status of a step that failed
 };

@@ -55,7 +55,7 @@ class WorkEnergy {
   ForceFunction force_;
   double h_;
   bool constant_, follows_motion_;
-  double start_;  // f(0) u(0)
+  double start_;            // f(0) u(0)
   double initial_kinetic_;  // v0^2/2
   double work_ = 0.0;
   double impacts_ = 0.0;  // the changes of v^2/2 at the impacts so far (follows_motion)

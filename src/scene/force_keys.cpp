@@ -124,9 +124,9 @@ void check_force(const KeyReader& r, const toml::table& root, const Scene& scene
         const StateWithInternal start = with_internal(scene.model, scene.initial);
         r.fail_value("force", "expression", *expression,
                      std::string(e.what()) + " (the initial state: " +
-                         (scene.model.internal.empty() ? "u = " + round_trip(start.u) +
-                                                             ", v = " + round_trip(start.v)
-                                                       : describe(start)) +
+                         (scene.model.internal.empty()
+                              ? "u = " + round_trip(start.u) + ", v = " + round_trip(start.v)
+                              : describe(start)) +
                          ")");
       }
     }

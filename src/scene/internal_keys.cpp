@@ -23,18 +23,16 @@ const KeySpec kInternalKeys[] = {
      .also = "an identifier, not t, u, v, pi or a channel's name",
      .meaning = "the variable's name, as force.expression, the rates and output.channels read it",
      .get_variable = [](const InternalVariable& z) -> KeyValue { return z.name; },
-     .set_variable = [](InternalVariable& z, const KeyValue& v) {
-       z.name = std::get<std::string>(v);
-     }},
+     .set_variable = [](InternalVariable& z,
+                        const KeyValue& v) { z.name = std::get<std::string>(v); }},
     {.table = "internal",
      .key = "initial",
      .type = KeyType::number,
      .required = true,
      .meaning = "z(0), the value at t = 0",
      .get_variable = [](const InternalVariable& z) -> KeyValue { return z.initial; },
-     .set_variable = [](InternalVariable& z, const KeyValue& v) {
-       z.initial = std::get<double>(v);
-     }},
+     .set_variable = [](InternalVariable& z,
+                        const KeyValue& v) { z.initial = std::get<double>(v); }},
     {.table = "internal",
      .key = "rate",
      .type = KeyType::text,
@@ -42,9 +40,8 @@ const KeySpec kInternalKeys[] = {
      .meaning = "g in z' = g(t, u, v, z), a muparser expression of t, u, v and the internal "
                 "variables by name",
      .get_variable = [](const InternalVariable& z) -> KeyValue { return z.rate; },
-     .set_variable = [](InternalVariable& z, const KeyValue& v) {
-       z.rate = std::get<std::string>(v);
-     }},
+     .set_variable = [](InternalVariable& z,
+                        const KeyValue& v) { z.rate = std::get<std::string>(v); }},
 };
 
 }  // namespace
@@ -136,8 +133,8 @@ void read_internal(const KeyReader& r, const toml::table& root, Scene& scene) {
     try {
       rates.evaluate(0.0, start, rate);
     } catch (const std::runtime_error& e) {
-      throw std::invalid_argument(std::string(e.what()) + " (the initial state: " +
-                                  describe(start) + ")");
+      throw std::invalid_argument(std::string(e.what()) +
+                                  " (the initial state: " + describe(start) + ")");
     }
   } catch (const std::invalid_argument& e) {
     r.fail_table("internal", where, e.what());

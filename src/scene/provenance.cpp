@@ -35,7 +35,8 @@ std::size_t utf8_length(const std::string& text, std::size_t i) {
   const unsigned char lead = at(i);
   std::size_t n;
   unsigned lo = 0x80, hi = 0xbf;  // the range of the second byte
-  if (lead >= 0xc2 && lead <= 0xdf) n = 2;
+  if (lead >= 0xc2 && lead <= 0xdf)
+    n = 2;
   else if (lead >= 0xe0 && lead <= 0xef) {
     n = 3;
     if (lead == 0xe0) lo = 0xa0;

@@ -160,10 +160,11 @@ std::string scene_help(std::size_t width) {
              width, 2) +
          "\n";
   for (const KeySpec& spec : internal_keys())
-    out += pad("    " + std::string(spec.key), kNameEnd) +
-           wrap(std::string(spec.meaning) + (spec.also.empty() ? "" : "; " + std::string(spec.also)),
-                width, kNameEnd) +
-           "\n";
+    out +=
+        pad("    " + std::string(spec.key), kNameEnd) +
+        wrap(std::string(spec.meaning) + (spec.also.empty() ? "" : "; " + std::string(spec.also)),
+             width, kNameEnd) +
+        "\n";
   return out;
 }
 

@@ -162,8 +162,9 @@ SweepGrid::SweepGrid(const std::string& scene_path, const std::vector<std::strin
       std::vector<std::string_view> allowed(keys.begin(), keys.end());
       throw SceneError("--vary " + axis.key() +
                        ": not a key a sweep can vary (allowed: " + join(allowed) +
-                       "; method.name, force.expression and internal.NAME.rate are not numbers: "
-                       "one sweep per value; the [output] keys do not change a summary)");
+                       "; method.name and force.expression are not numbers, nor is "
+                       "internal.NAME.rate: one sweep per value; the [output] keys do not change "
+                       "a summary)");
     }
     for (const SweepAxis& other : axes_)
       if (&other != &axis && other.key() == axis.key())

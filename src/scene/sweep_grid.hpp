@@ -86,7 +86,7 @@ class SweepGrid {
   std::string path_;
   std::vector<std::string> overrides_;
   std::vector<SweepAxis> axes_;
-  std::vector<const KeySpec*> keys_;  // the scene reader's key of each axis
+  std::vector<const KeySpec*> keys_;       // the scene reader's key of each axis
   std::vector<std::ptrdiff_t> variables_;  // its internal variable (internal.NAME.key), else -1
   std::vector<std::int64_t> strides_;
   std::int64_t size_ = 1;
