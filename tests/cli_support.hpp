@@ -141,6 +141,32 @@ inline std::vector<impact::Event> read_events(const std::string& text) {
   return events;
 }
 
+// The value of a JSON string member of a provenance sidecar, `"key": "..."`, unescaped (\n \t \"
+// \\ and \uXXXX below 0x80, what the sidecar writes for a scene's text); empty when absent.
+inline std::string json_member(const std::string& json, const std::string& key) {
+  const std::size_t at = json.find("\"" + key + "\": \"");
+  if (at == std::string::npos) return {};
+  std::string out;
+  for (std::size_t i = at + key.size() + 5; i < json.size() && json[i] != '"'; ++i) {
+    if (json[i] != '\\') {
+      out += json[i];
+      continue;
+    }
+    const char c = json[++i];
+    if (c == 'n') {
+      out += '\n';
+    } else if (c == 't') {
+      out += '\t';
+    } else if (c == 'u') {
+      out += static_cast<char>(std::stoi(json.substr(i + 1, 4), nullptr, 16));
+      i += 4;
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
 // The run must fail with `code`, a message matching `says`, and leave the directory as it was.
 #define CHECK_FAILS_CLEANLY(dir, args, expected_code, says) \
   do {                                                      \

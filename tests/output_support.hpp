@@ -38,7 +38,7 @@ struct LibraryRun {
 };
 
 // The scene of `impact run path --set ...` run by the library, every step kept; with_errors also
-// measures it against the reference as measure_errors() does (a second run).
+// measures it against the reference as ErrorObserver does (a second run).
 inline LibraryRun library_run(const std::string& path, const std::vector<std::string>& sets,
                               bool with_errors) {
   Run loaded = load_run(path, sets);
@@ -61,10 +61,13 @@ inline LibraryRun library_run(const std::string& path, const std::vector<std::st
              run.steps.push_back({s, info.contact_force, info.iterations, work.energy(s)});
            });
   if (with_errors) {
+    // measure_errors(), whose energy error compares v^2/2 - f u at T; with f(t) `impact run`
+    // compares E as the channel defines it, the run's last E above against the reference's.
     AnyStepper stepper = make_stepper(scene);
-    run.errors = std::visit(
-        [&](auto& st) { return measure_errors(st, scene.model, scene.initial, scene.grid); },
-        stepper);
+    ErrorObserver errors(scene.model, scene.initial, scene.grid);
+    const RunSummary summary = simulate(stepper, scene.initial, scene.grid, errors);
+    run.errors = constant_force(scene.model) ? errors.result(summary)
+                                             : errors.result(summary, run.steps.back().energy);
   }
   return run;
 }

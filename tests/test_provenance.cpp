@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli_support.hpp"
@@ -27,7 +28,8 @@ bool same_scene(const impact::Scene& a, const impact::Scene& b) {
          bits(x.phi) == bits(y.phi) && bits(x.f) == bits(y.f) && x.cor == y.cor &&
          x.harmonic == y.harmonic && x.expression == y.expression && bits(a.T) == bits(b.T) &&
          bits(a.grid.h) == bits(b.grid.h) && a.grid.steps == b.grid.steps && a.method == b.method &&
-         a.output.channels == b.output.channels && a.output.every == b.output.every;
+         a.output.channels == b.output.channels && a.output.every == b.output.every &&
+         x.internal == y.internal;
 }
 
 // The value of "key": ... on its line of a sidecar (one key per line), as written.
@@ -61,6 +63,41 @@ TEST_CASE("provenance: the scene as run reads back to the same scene, for every 
       INFO(path << " with " << method << "\n" << impact::resolved_scene(scene));
       CHECK(same_scene(impact::parse_scene(impact::resolved_scene(scene), "resolved.toml"), scene));
     }
+}
+
+TEST_CASE(
+    "provenance: a sidecar's scene_as_run reruns to the same bytes, for every shipped scene "
+    "and every kind of force and internal variables",
+    "[provenance][regression]") {
+  TempDir dir;
+  std::vector<std::string> scenes;
+  for (const auto& e : std::filesystem::recursive_directory_iterator(kSource + "/experiments"))
+    if (e.path().extension() == ".toml" && e.path().filename() != "reference.toml" &&
+        slurp(e.path().string()).find("[method]") != std::string::npos)
+      scenes.push_back(e.path().string());
+  REQUIRE(scenes.size() >= 9);
+  const std::string head =
+      "[initial]\nu0 = 0.3\nv0 = 0.0\n[time]\nT = 0.5\nh = 1e-3\n[method]\nname = "
+      "\"event_driven\"\n[floor]\ncor = 0.8\n";
+  for (const auto& [name, text] : std::vector<std::pair<std::string, std::string>>{
+           {"expression.toml", head + "[force]\nexpression = \"-9.81 + 5 * sin(20 * t)\"\n"},
+           {"state.toml", head + "[force]\nexpression = \"-9.81 - 20 * (u - 0.3) - 0.5 * v\"\n"},
+           {"internal.toml",
+            head + "[force]\nexpression = \"-9.81 + 5 * b - D\"\n[[internal]]\nname = "
+                   "\"b\"\ninitial = 1.0\nrate = \"-2 * b + u\"\n[[internal]]\nname = "
+                   "\"D\"\ninitial = 0.25\nrate = 'v^2 / 2'\n"}})
+    scenes.push_back(dir.write(name, text));
+  for (const std::string& path : scenes) {
+    INFO(path);
+    // Every 100th row keeps the long scenes' files small; it is part of the scene as run.
+    const Result r = dir.run("run " + quote(path) + " -q --set output.every=100 -o rows.csv");
+    REQUIRE(r.code == 0);
+    const std::string as_run = json_member(slurp(dir / "rows.csv.json"), "scene_as_run");
+    INFO(as_run);
+    dir.write("as_run.toml", as_run);
+    REQUIRE(dir.run("run as_run.toml -q --no-provenance -o again.csv").code == 0);
+    CHECK(slurp(dir / "again.csv") == slurp(dir / "rows.csv"));
+  }
 }
 
 TEST_CASE("provenance: impact run writes OUT.json beside the rows, with what made them",

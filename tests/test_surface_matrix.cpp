@@ -172,29 +172,6 @@ std::string against(const TempDir& dir, const Scene* scene) {
   return "";
 }
 
-// The value of a JSON string member in the sidecar (escapes: \n \" \\ \t \uXXXX below 0x80).
-std::string json_member(const std::string& json, const std::string& key) {
-  const std::size_t at = json.find("\"" + key + "\": \"");
-  if (at == std::string::npos) return {};
-  std::string out;
-  for (std::size_t i = at + key.size() + 5; i < json.size() && json[i] != '"'; ++i) {
-    if (json[i] != '\\') {
-      out += json[i];
-      continue;
-    }
-    const char c = json[++i];
-    if (c == 'n')
-      out += '\n';
-    else if (c == 't')
-      out += '\t';
-    else if (c == 'u')
-      out += static_cast<char>(std::stoi(json.substr(i + 1, 4), nullptr, 16)), i += 4;
-    else
-      out += c;
-  }
-  return out;
-}
-
 std::string sidecar_rerun(const TempDir& dir, const Scene* scene) {
   const Result r = dir.run("run s.toml -q -o run.csv");
   if (r.code != 0 || !scene) return refused_or(r, "impact run");
