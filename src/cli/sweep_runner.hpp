@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -28,8 +29,19 @@ struct SweepRun {
 // the points, so that the bytes do not depend on the number of threads. With `progress`, a line on
 // standard error shows the points done, the rate and the time left.
 // `instruction_set` is the ensemble's vector code (empty: the widest this processor has).
+// `poll`, when given (the Python module's Ctrl-C), is called by every thread inside the points'
+// runs every `poll_steps` steps and by the calling thread at least every 20 ms while it waits;
+// what it throws stops every thread and leaves run_points.
+struct SweepPoll {
+  std::function<void()> poll;
+  std::int64_t poll_steps = 0;
+};
 SweepRun run_points(const SweepGrid& grid, const std::vector<Quantity>& quantities,
                     bool against_exact, const Shard& shard, int threads,
-                    const std::string& instruction_set, AtomicFile& file, bool progress);
+                    const std::string& instruction_set, AtomicFile& file, bool progress,
+                    const SweepPoll& poll = {});
+
+// The most threads a sweep starts (impact sweep --threads, impact.sweep's threads).
+inline constexpr int kMaxThreads = 4096;
 
 }  // namespace impact::cli

@@ -10,6 +10,29 @@
 #include "impact/work_energy.hpp"
 
 namespace impact {
+namespace {
+
+[[gnu::noinline]] void call_check(const RowStream::Check& check, std::int64_t l) {
+  check(l);
+}
+
+// The summary with a caller's check every `every` steps, stepped locally as the summary alone.
+struct CheckedSummary {
+  static constexpr bool kStepsLocally = true;
+  SummaryObserver summary;
+  std::int64_t every, next;
+  const RowStream::Check* check;
+  template <class St>
+  void operator()(std::int64_t l, const St& s, const StepInfo& info) {
+    summary(l, s, info);
+    if (l == next) [[unlikely]] {
+      next += every;
+      call_check(*check, l);
+    }
+  }
+};
+
+}  // namespace
 
 RunReport run_scene(const Scene& scene, AnyStepper& stepper, const RunOutputs& outputs) {
   const auto start = std::chrono::steady_clock::now();
@@ -32,8 +55,12 @@ RunReport run_scene(const Scene& scene, AnyStepper& stepper, const RunOutputs& o
   // plain loop of its rows or of its summary. The summary steps in the loop itself when it is the
   // run's only output (the sweep), else it joins the out-of-line watch.
   const bool summary_inline = outputs.summary && !outputs.rows;
+  // The rows' stream makes the caller's checks; without rows, the summary or the watch does.
+  const std::int64_t check_every =
+      outputs.check && outputs.check_every > 0 && !outputs.rows ? outputs.check_every : 0;
   StepWatch watch;
-  if (errors || work || log || outputs.watch || (outputs.summary && !summary_inline))
+  if (errors || work || log || outputs.watch || (outputs.summary && !summary_inline) ||
+      (check_every > 0 && !summary_inline))
     watch = [&](std::int64_t l, const StateWithInternal& s, const StepInfo& info) {
       if (errors) (*errors)(l, s, info);
       if (work && l > 0) work->step(l, s);
@@ -45,6 +72,7 @@ RunReport run_scene(const Scene& scene, AnyStepper& stepper, const RunOutputs& o
           summary(l, s, info);
       }
       if (outputs.watch) outputs.watch(l, s, info);
+      if (check_every > 0 && l > 0 && l % check_every == 0) outputs.check(l);
     };
 
   RunReport report;
@@ -66,6 +94,10 @@ RunReport run_scene(const Scene& scene, AnyStepper& stepper, const RunOutputs& o
         outputs.check_every, outputs.check);
     const bool sums = has(Channel::N) || has(Channel::iterations);
     report.summary = simulate_rows(stepper, scene.initial, scene.grid, stream, sums, watch);
+  } else if (summary_inline && !watch && check_every > 0) {
+    CheckedSummary checked{summary, check_every, check_every, &outputs.check};
+    report.summary = simulate(stepper, scene.initial, scene.grid, checked);
+    summary = checked.summary;
   } else if (summary_inline && !watch) {
     report.summary = simulate(stepper, scene.initial, scene.grid, summary);
   } else if (summary_inline) {
@@ -95,11 +127,14 @@ RunReport run_scene(const Scene& scene, AnyStepper& stepper, const RunOutputs& o
   return report;
 }
 
-PointOutcome summarize(const Scene& scene, bool against_exact) {
+PointOutcome summarize(const Scene& scene, bool against_exact, const RowStream::Check& check,
+                       std::int64_t check_every) {
   AnyStepper stepper = make_stepper(scene);
   RunOutputs outputs;
   outputs.summary = true;
   outputs.against_exact = against_exact;
+  outputs.check = check;
+  outputs.check_every = check_every;
   const RunReport report = run_scene(scene, stepper, outputs);
   return {*report.point, report.errors, report.reference_seconds};
 }
