@@ -52,8 +52,8 @@ class Converter {
     Enter(Converter& c, py::handle container) : c(c), id(container.ptr()) {
       if (!c.open_.insert(id).second)
         throw SceneError(c.path_ +
-                         ": contains itself (a dict or list that holds itself is not a "
-                         "TOML value)");
+                         ": refers back to a dict or list that holds it (a structure that "
+                         "contains itself is not a TOML value)");
       if (++c.depth_ > kMaxDepth)
         throw SceneError(c.path_ + ": nested more than " + std::to_string(kMaxDepth) +
                          " levels deep; a scene's tables and lists nest a few levels");
