@@ -12,7 +12,7 @@ namespace py = pybind11;
 namespace impact::python {
 
 void SignalPoll::operator()() const {
-  if (raised_.load(std::memory_order_relaxed)) throw Interrupted{};
+  if (raised_.load(std::memory_order_relaxed)) throw impact::Interrupted{};
   if (std::this_thread::get_id() != owner_) return;
   const auto now = std::chrono::steady_clock::now();
   if (now < next_) return;
@@ -20,7 +20,7 @@ void SignalPoll::operator()() const {
   py::gil_scoped_acquire gil;
   if (PyErr_CheckSignals() != 0) {
     raised_.store(true, std::memory_order_relaxed);
-    throw Interrupted{};
+    throw impact::Interrupted{};
   }
 }
 
@@ -30,7 +30,7 @@ void raise_failure(std::exception_ptr failure) {
   if (PyErr_Occurred() || PyErr_CheckSignals() != 0) throw py::error_already_set();
   try {
     std::rethrow_exception(failure);
-  } catch (const Interrupted&) {
+  } catch (const impact::Interrupted&) {
     throw std::logic_error("impact: interrupted without a Python error");
   } catch (const SceneError&) {
     throw;

@@ -21,13 +21,10 @@ namespace impact::python {
 // 3 us, one clock read each; at the slowest steppers' tens of microseconds, 10 to 100 ms.
 inline constexpr std::int64_t kPollSteps = 1024;
 
-// Thrown inside the library's work once a signal handler has raised (the Python error is set);
-// not a std::exception, so that nothing on its way takes it for a failure of the run.
-struct Interrupted {};
-
 // Made on the calling thread, which holds the GIL. Called from any thread during the work: on
 // the calling thread it runs Python's signal handlers (PyErr_CheckSignals, with the GIL) at most
-// every kInterval; once a handler raised, every call on every thread throws Interrupted.
+// every kInterval; once a handler raised (the Python error is set), it sets stop() and every call
+// on every thread throws impact::Interrupted (run.hpp), as the library does where it reads stop().
 class SignalPoll {
  public:
   static constexpr std::chrono::milliseconds kInterval{10};
@@ -39,6 +36,8 @@ class SignalPoll {
   std::function<void(std::int64_t)> check() const {
     return [this](std::int64_t) { (*this)(); };
   }
+  // Set once a signal handler raised: what the library's threads read (RunOutputs::stop).
+  const std::atomic<bool>* stop() const { return &raised_; }
 
  private:
   std::thread::id owner_;

@@ -162,7 +162,7 @@ py::dict sweep(py::handle scene, py::dict vary, py::handle summary, py::handle s
     AtomicFile file(rows.path());
     std::fputs(cli::csv_header(grid, quantities).c_str(), file.stream());
     cli::run_points(grid, quantities, exact, cli::Shard{}, workers, "", file, false,
-                    {[&] { poll(); }, kPollSteps});
+                    {[&] { poll(); }, poll.stop(), kPollSteps});
     file.commit();
     return grid.size();
   });

@@ -40,7 +40,6 @@ class Runner {
         shard_(shard),
         instruction_set_(instruction_set),
         poll_(poll) {
-    if (poll_.poll) check_ = [this](std::int64_t) { poll_.poll(); };
     points_ = shard_points(grid, shard);
     // Points on one grid must be close in the order to share a chunk: a sweep whose grid changes
     // every few points runs point by point, in chunks small enough for every thread to get some.
@@ -65,7 +64,7 @@ class Runner {
     std::vector<Candidate> candidates;
     Scene scene = grid_.base();
     for (std::int64_t p = 0; p < count; ++p) {
-      if (poll_.poll) poll_.poll();
+      if (poll_.stop && poll_.stop->load(std::memory_order_relaxed)) throw Interrupted{};
       grid_.apply(point(first + p), scene);
       const auto kind = against_ ? std::nullopt : ensemble_kind(scene);
       if (kind)
@@ -103,7 +102,7 @@ class Runner {
   void run_alone(const Scene& scene, PointResult& result) const {
     const auto start = timed_ ? Clock::now() : Clock::time_point();
     try {
-      result.outcome = summarize(scene, against_, check_, poll_.poll_steps);
+      result.outcome = summarize(scene, against_, poll_.stop, poll_.poll_steps);
     } catch (const NumericalError& e) {
       result.failure = e.what();
     }
@@ -143,7 +142,7 @@ class Runner {
       summaries.assign(models.size(), std::nullopt);
       const auto start = timed_ ? Clock::now() : Clock::time_point();
       summarize_together(begin->kind, begin->grid, models, initial, summaries, instruction_set_,
-                         check_, poll_.poll_steps);
+                         poll_.stop, poll_.poll_steps);
       const double share = timed_ ? seconds_since(start) / static_cast<double>(models.size()) : 0;
       for (auto c = begin; c != end; ++c) {
         PointResult& r = results[static_cast<std::size_t>(c->position)];
@@ -166,7 +165,6 @@ class Runner {
   Shard shard_;
   const std::string& instruction_set_;
   const SweepPoll& poll_;
-  std::function<void(std::int64_t)> check_;  // poll_ as a run's periodic check
   std::int64_t points_ = 0, chunk_ = 1;
   bool timed_ = false;
 };

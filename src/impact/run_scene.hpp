@@ -4,6 +4,7 @@
 // apart from the reference's.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <optional>
 
@@ -28,6 +29,9 @@ struct RunOutputs {
   // with rows or without; 0: never.
   std::int64_t check_every = 0;
   RowStream::Check check;
+  // Set by another thread to stop the run: read every check_every steps (every 1024 where the
+  // summary alone steps, a sweep's point, without a call in the step loop), it throws Interrupted.
+  const std::atomic<bool>* stop = nullptr;
 };
 
 struct RunReport {
@@ -45,8 +49,8 @@ struct RunReport {
 RunReport run_scene(const Scene& scene, AnyStepper& stepper, const RunOutputs& outputs);
 
 // run_scene() of the scene's method with a summary (and the errors against the reference when
-// against_exact): one point of `impact sweep`; `check`, when given, every check_every steps.
-PointOutcome summarize(const Scene& scene, bool against_exact, const RowStream::Check& check = {},
-                       std::int64_t check_every = 0);
+// against_exact): one point of `impact sweep`; `stop`, when given, read every check_every steps.
+PointOutcome summarize(const Scene& scene, bool against_exact,
+                       const std::atomic<bool>* stop = nullptr, std::int64_t check_every = 0);
 
 }  // namespace impact
