@@ -145,6 +145,11 @@ std::string quantity_name(Quantity q, const Model& model) {
   return std::string(kQuantities[static_cast<int>(q)].name);
 }
 
+bool is_quantity_name(std::string_view name) {
+  return std::any_of(std::begin(kQuantities), std::end(kQuantities),
+                     [&](const QuantityInfo& q) { return q.name == name; });
+}
+
 std::vector<Quantity> parse_summary(const std::string& list, bool against_exact,
                                     const Model& model) {
   std::vector<Quantity> quantities;

@@ -48,6 +48,8 @@ std::vector<Quantity> parse_summary(const std::string& list, bool against_exact,
                                     const Model& model = {});
 // A name, as in the header: NAME_T for an internal variable of `model`.
 std::string quantity_name(Quantity q, const Model& model = {});
+// Whether `name` is a quantity's name (NAME_T as z1_T..z4_T).
+bool is_quantity_name(std::string_view name);
 
 // What one point gave: its summary, or why it failed (a NumericalError's message).
 struct PointResult {
