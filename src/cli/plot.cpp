@@ -199,10 +199,8 @@ void run_gnuplot(const std::string& script, const std::vector<std::string>& name
 CLI::App* add_plot_command(CLI::App& app, PlotOptions& o) {
   CLI::App* cmd = app.add_subcommand(
       "plot",
-      "Draw a CSV of impact run (one panel per channel, internal variables included), of its "
-      "--events (one more panel per internal variable), of impact sweep (one panel per quantity "
-      "against the first varied key) or of impact work-precision (its --plot figure) with "
-      "gnuplot.");
+      "Draw a CSV of impact run, its --events, impact sweep or impact work-precision with "
+      "gnuplot: one panel per channel, internal variable or quantity.");
   cmd->add_option("CSV", o.csv,
                   "A CSV written by impact run, run --events, sweep or work-precision")
       ->required();
