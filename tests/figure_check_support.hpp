@@ -8,6 +8,7 @@
 // What counts as "from the data": autoscale (`*` or no range), or a bound whose expression names a
 // variable that stats, a results file (load), value() or system() gave, or a variable computed
 // from one. A bound of literal numbers (directly, or through variables assigned literals) is fixed.
+// A variable assigned from the data once stays so (both branches of an `if` are read).
 // A fixed range or a key inside the plot is accepted with a stated reason, a comment on its line
 // or in the comment block just above it: "fixed range: <reason>", "key inside: <reason>"; an axis
 // without a label with "no xlabel: <reason>" / "no ylabel: <reason>". A reason has 3 words or more.
@@ -358,7 +359,10 @@ class Checker {
     static const std::regex assignment(R"(^([A-Za-z_]\w*)\s*(\([^()]*\))?\s*=([^=].*)$)");
     if (std::regex_match(s.text, m, assignment)) {
       const std::string name = m[1], expr = m[3];
-      definitions_[name] = expr;
+      // Both branches of an `if` are read: a variable the data set once stays from the data.
+      const auto old = definitions_.find(name);
+      const bool was_derived = old != definitions_.end() && derived(old->second);
+      definitions_[name] = was_derived ? old->second + " + " + expr : expr;
       const auto t = tokens(expr);
       if (t.size() == 1 && t[0].kind == Token::kString) strings_[name] = unquote(t[0].text);
       return;
