@@ -34,8 +34,10 @@ struct Statement {
 inline std::size_t skip_string(const std::string& s, std::size_t i) {
   const char q = s[i];
   for (++i; i < s.size(); ++i) {
-    if (q == '"' && s[i] == '\\') ++i;
-    else if (s[i] == q) return i + 1;
+    if (q == '"' && s[i] == '\\')
+      ++i;
+    else if (s[i] == q)
+      return i + 1;
   }
   return s.size();
 }
@@ -72,7 +74,8 @@ inline std::vector<Statement> read_statements(const std::string& script) {
   std::size_t start = 0;
   while (start <= script.size()) {
     const auto end = script.find('\n', start);
-    lines.push_back(script.substr(start, end == std::string::npos ? std::string::npos : end - start));
+    lines.push_back(
+        script.substr(start, end == std::string::npos ? std::string::npos : end - start));
     if (end == std::string::npos) break;
     start = end + 1;
   }
@@ -99,7 +102,8 @@ inline std::vector<Statement> read_statements(const std::string& script) {
       }
     }
     if (code.find_first_not_of(" \t") == std::string::npos) {
-      above = comment.empty() && logical.find('#') == std::string::npos ? "" : above + " " + comment;
+      above =
+          comment.empty() && logical.find('#') == std::string::npos ? "" : above + " " + comment;
       continue;
     }
     split_statements(code, first_line, above + " " + comment, out);
@@ -141,8 +145,9 @@ inline std::vector<Token> tokens(const std::string& s) {
       i = j;
     } else if (std::isdigit(c) || (c == '.' && i + 1 < s.size() && std::isdigit(s[i + 1]))) {
       std::size_t j = i;
-      while (j < s.size() && (std::isalnum(static_cast<unsigned char>(s[j])) || s[j] == '.' ||
-                              ((s[j] == '-' || s[j] == '+') && (s[j - 1] == 'e' || s[j - 1] == 'E'))))
+      while (j < s.size() &&
+             (std::isalnum(static_cast<unsigned char>(s[j])) || s[j] == '.' ||
+              ((s[j] == '-' || s[j] == '+') && (s[j - 1] == 'e' || s[j - 1] == 'E'))))
         ++j;
       out.push_back({Token::kNumber, s.substr(i, j - i)});
       i = j;
@@ -264,7 +269,8 @@ class Checker {
       return;
     }
     for (const auto& l : literals)
-      if (!std::regex_search(l, unit)) problem(line, axis + "label without a unit in brackets: " + l);
+      if (!std::regex_search(l, unit))
+        problem(line, axis + "label without a unit in brackets: " + l);
   }
 
   void set_range(char axis, const std::string& rest, const Statement& s) {
@@ -275,10 +281,14 @@ class Checker {
     int depth = 0;
     std::size_t colon = std::string::npos;
     for (std::size_t i = 0; i < inside.size() && colon == std::string::npos; ++i) {
-      if (inside[i] == '(') ++depth;
-      else if (inside[i] == ')') --depth;
-      else if (inside[i] == '"' || inside[i] == '\'') i = skip_string(inside, i) - 1;
-      else if (inside[i] == ':' && depth == 0) colon = i;
+      if (inside[i] == '(')
+        ++depth;
+      else if (inside[i] == ')')
+        --depth;
+      else if (inside[i] == '"' || inside[i] == '\'')
+        i = skip_string(inside, i) - 1;
+      else if (inside[i] == ':' && depth == 0)
+        colon = i;
     }
     const std::string bounds[2] = {inside.substr(0, colon),
                                    colon == std::string::npos ? "" : inside.substr(colon + 1)};
@@ -295,7 +305,8 @@ class Checker {
     static const std::regex off(R"(^\s*off\b)");
     static const std::regex placement(
         R"(\b(inside|outside|below|above|over|under|top|bottom|left|right|center|at|tmargin|bmargin|lmargin|rmargin|default)\b)");
-    static const std::regex outside(R"(\b(outside|below|above|over|under|tmargin|bmargin|lmargin|rmargin)\b|\bat\s+screen\b)");
+    static const std::regex outside(
+        R"(\b(outside|below|above|over|under|tmargin|bmargin|lmargin|rmargin)\b|\bat\s+screen\b)");
     if (std::regex_search(rest, off)) {
       key_on_ = false;
       return;
@@ -321,8 +332,10 @@ class Checker {
       }
       if (c == '(' || c == '[') ++depth;
       if (c == ')' || c == ']') --depth;
-      if (c == ',' && depth == 0) elements.emplace_back();
-      else elements.back() += c;
+      if (c == ',' && depth == 0)
+        elements.emplace_back();
+      else
+        elements.back() += c;
     }
     static const std::regex untitled(R"(\bnotitle\b|\b(title|t)\s*(""|''))");
     for (const auto& e : elements)
@@ -374,16 +387,22 @@ class Checker {
       const auto waive = [&](const std::string& axis, bool& waived) {
         waived = has_reason(s.comment, "no " + axis + "label");
       };
-      if (what == "title") title_ = set ? rest : "";
-      else if (what == "xlabel") xlabel_ = set ? rest : "", waive("x", xlabel_waived_);
-      else if (what == "ylabel") ylabel_ = set ? rest : "", waive("y", ylabel_waived_);
-      else if (what == "key") set ? set_key(rest, s) : void(key_on_ = false);
-      else if (what == "border") border_ = set;
+      if (what == "title")
+        title_ = set ? rest : "";
+      else if (what == "xlabel")
+        xlabel_ = set ? rest : "", waive("x", xlabel_waived_);
+      else if (what == "ylabel")
+        ylabel_ = set ? rest : "", waive("y", ylabel_waived_);
+      else if (what == "key")
+        set ? set_key(rest, s) : void(key_on_ = false);
+      else if (what == "border")
+        border_ = set;
       else if (what.size() >= 6 && what.substr(what.size() - 5) == "range")
         set ? set_range(what[0], rest, s) : void(axes_.erase(what[0]));
       else if (what == "autoscale") {
         if (rest.empty()) axes_.clear();
-        for (const char a : std::string("xyz")) (rest.find(a) != std::string::npos) && axes_.erase(a);
+        for (const char a : std::string("xyz"))
+          (rest.find(a) != std::string::npos) && axes_.erase(a);
       } else if (what == "multiplot" && set && rest.find("title") == std::string::npos)
         problem(s.line, "a figure (multiplot) without a title");
       return;

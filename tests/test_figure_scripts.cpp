@@ -58,9 +58,10 @@ std::string replaced(const std::string& from, const std::string& to, std::string
 
 }  // namespace
 
-TEST_CASE("every experiment's plot.gp titles its panels, labels its axes with units, keeps its key "
-          "off the data and takes its ranges from the data",
-          "[figures]") {
+TEST_CASE(
+    "every experiment's plot.gp titles its panels, labels its axes with units, keeps its key "
+    "off the data and takes its ranges from the data",
+    "[figures]") {
   int scripts = 0;
   for (const auto& dir : fs::directory_iterator(kRoot / "experiments")) {
     const auto script = dir.path() / "plot.gp";
@@ -94,13 +95,15 @@ TEST_CASE("the figure check names a fixed range, a key on the data, a missing ti
     names(replaced("[STATS_min : STATS_max]", "[1e-16 : 30]"), "fixed x range");
   }
   SECTION("a fixed range through variables assigned literals") {
-    names(replaced("set xrange", "lo = 1e-16; hi = 2 * lo\nset xrange [lo : hi]\n#"), "fixed x range");
+    names(replaced("set xrange", "lo = 1e-16; hi = 2 * lo\nset xrange [lo : hi]\n#"),
+          "fixed x range");
   }
   SECTION("a key inside the plot") {
     names(replaced("set key outside right top", "set key bottom right box"), "key inside");
   }
   SECTION("gnuplot's default key, top right inside") {
-    names(replaced("set key outside right top", "set key noenhanced\nset key default"), "key inside");
+    names(replaced("set key outside right top", "set key noenhanced\nset key default"),
+          "key inside");
   }
   SECTION("a panel without a title") {
     names(replaced("set title \"(a) a panel\"", "unset title"), "without a title");
@@ -108,7 +111,9 @@ TEST_CASE("the figure check names a fixed range, a key on the data, a missing ti
   SECTION("a label without a unit") {
     names(replaced("u(t) [m]", "u(t)"), "ylabel without a unit");
   }
-  SECTION("no label") { names(replaced("set xlabel \"t [s]\"", "unset xlabel"), "without an xlabel"); }
+  SECTION("no label") {
+    names(replaced("set xlabel \"t [s]\"", "unset xlabel"), "without an xlabel");
+  }
   SECTION("a figure without a title") {
     names(replaced("layout 1,2 title \"A figure\"", "layout 1,2"), "multiplot");
   }
@@ -118,8 +123,9 @@ TEST_CASE("the figure check names a fixed range, a key on the data, a missing ti
   }
 }
 
-TEST_CASE("the figure check takes a stated reason for a fixed range or a key inside, not an empty one",
-          "[figures]") {
+TEST_CASE(
+    "the figure check takes a stated reason for a fixed range or a key inside, not an empty one",
+    "[figures]") {
   CHECK(check(replaced("set xrange [STATS_min : STATS_max]",
                        "set xrange [0 : 2 * pi]  # fixed range: the phase is an angle"))
             .empty());
