@@ -96,7 +96,7 @@ panel_at = "pw = (gx1 - gx0 - (ncol - 1) * gapx) / ncol; ph = (gy1 - gy0 - (nrow
 key_strip = "set lmargin at screen gx1 + 0.005; set rmargin at screen 0.995; set tmargin at screen gy1; \
   set bmargin at screen gy0; unset title; unset border; unset tics; unset xlabel; unset ylabel; \
   unset logscale; unset grid; set xrange [0:1]; set yrange [0:1]; \
-  set key center center nobox noopaque Left reverse enhanced spacing 1.3 font key_font title key_title; \
+  set key inside center center nobox noopaque Left reverse enhanced spacing 1.3 font key_font title key_title; \
   plot for [c in key_curves] NaN with linespoints lc rgb col(c) dt dash(c) pt point(c) ps psize(c) lw 1.5 title tit(c); \
   set border; set tics; set grid; unset key"
 
@@ -107,9 +107,11 @@ do for [scene in constant_scenes] {
     if (strstrt(" ".all_curves." ", " ".c." ") == 0) { all_curves = all_curves." ".c }
   }
 }
-penalty_note = "method\n(penalty: on the grid h = 10^{-3} s;\nagainst CPU time one point,\nat its tightest tolerance 10^{-11})\n"
-# The same for the figures whose tolerance sweeps include event_driven's and LSODAR's.
-tolerance_note = "method\n(penalty, event\\_driven, LSODAR:\non the grid h = 10^{-3} s;\nagainst CPU time one point,\nat the tightest tolerance 10^{-11})\n"
+# The key's title names the tolerance sweeps the figure draws, and only those.
+sweeps_in(curves) = (strstrt(curves, "penalty") ? ", penalty" : "") . \
+  (strstrt(curves, "event_driven") ? ", event\\_driven" : "") . (strstrt(curves, "lsodar") ? ", LSODAR" : "")
+tolerance_note(curves) = strlen(sweeps_in(curves)) == 0 ? "method" : \
+  "method\n(".sweeps_in(curves)[3:].":\non the grid h = 10^{-3} s;\nagainst CPU time one point,\nat the tightest tolerance 10^{-11})\n"
 zero_note = "an error below 10^{-16} (exact, or rounding) is drawn on the bottom axis, at < 10^{-16}"
 
 key_font = ",10"
@@ -155,13 +157,13 @@ do for [format in "png svg"] {
   set yrange [0:0.7]
   set ytics autofreq
   # key inside: the band above 0.5, which no loss reaches (see the range)
-  set key top left Left reverse font ",9" box opaque
+  set key inside top left Left reverse font ",9" box opaque
   plot results.'/mechanism.csv' skip 1 using 1:4 with points pt 6 ps 2 lc rgb "#999999" \
            title "predicted 2{/Symbol q}(1-{/Symbol q})v^2, {/Symbol q} = frac({/Symbol p}/h)", \
        '' skip 1 using 1:5 with points pt 7 ps 0.9 lc rgb "#0072B2" title "measured"
   unset key
   set format y "10^{%L}"
-  key_curves = all_curves; key_title = penalty_note
+  key_curves = all_curves; key_title = tolerance_note(key_curves)
   @key_strip
   unset multiplot
 
@@ -203,7 +205,7 @@ do for [format in "png svg"] {
   set autoscale xy
   set ytics autofreq
   # key inside: the distance grows to the right, so the bottom right is empty, clear of the lines
-  set key bottom right Left reverse font ",9" box opaque title ""
+  set key inside bottom right Left reverse font ",9" box opaque title ""
   set arrow 1 from lyapunov_T, graph 0 to lyapunov_T, graph 1 nohead dt 2 lc rgb "#D55E00"
   set arrow 2 from 1 / lyapunov_lambda, graph 0 to 1 / lyapunov_lambda, graph 1 nohead dt 3 lc rgb "#000000"
   plot results.'/lyapunov.csv' skip 1 using 1:($2 > 0 ? $2 : NaN) with lines lw 1 lc rgb "#999999" title "distance", \
@@ -220,7 +222,7 @@ do for [format in "png svg"] {
       if (strstrt(" ".key_curves." ", " ".c." ") == 0) { key_curves = key_curves." ".c }
     }
   }
-  key_title = tolerance_note
+  key_title = tolerance_note(key_curves)
   @key_strip
   unset multiplot
   }
@@ -299,9 +301,7 @@ do for [format in "png svg"] {
       }
     }
     key_curves = value('curves_'.scene)
-    key_title = !has_penalty ? "method" : strstrt(key_curves, "penalty") && \
-                strstrt(key_curves, "_driven") + strstrt(key_curves, "lsodar") == 0 ? penalty_note : \
-                tolerance_note
+    key_title = tolerance_note(key_curves)
     @key_strip
     unset multiplot
   }
