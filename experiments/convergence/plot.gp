@@ -27,7 +27,8 @@ do for [format in "png svg"] {
   set logscale x
   set xlabel "time step h [s]"
   set format x "10^{%T}"
-  set autoscale xy
+  set xrange [*:*] noextend
+  set autoscale y
   # Every key below its panel, three rows each (a blank key title keeps it off the x label), so
   # that the panels of a row line up; the log axes a little past the data.
   set offsets graph 0.02, graph 0.02, graph 0.04, graph 0.04
@@ -113,7 +114,8 @@ do for [format in "png svg"] {
   set xlabel "time step h [s]"
   set format x "10^{%T}"
   set format y "10^{%T}"
-  set autoscale xy
+  set xrange [*:*] noextend
+  set autoscale y
   set ylabel "sup-norm error [m]"
   set title "(a) max_l |u^l - u_e(t_l)| against the exact solution u_e with COR e"
   set key below maxrows 3 nobox font ",9" title " "

@@ -143,7 +143,8 @@ do for [format in "png svg"] {
 
   set title "(a) no COR: energy lost, E(0) - E(T) and at the first impact (exact: 0)"
   set logscale y
-  set autoscale y
+  set yrange [*:*] noextend
+  set offsets 0, 0, graph 0.08, graph 0.05
   set format y "%g"
   set ylabel "energy loss [J/kg] (log scale)"
   plot sweep using 1:(col("no_cor_direct_energy_loss")) with points pt 6 lc rgb blue \
@@ -156,6 +157,7 @@ do for [format in "png svg"] {
          lc rgb purple title "fb_newton, first impact", \
        energy0 with lines lc rgb "black" dt 2 title sprintf("E(0) = %.3f", energy0)
   unset logscale y
+  unset offsets
 
   set title "(b) no COR: flatness of E(t), the mean of E^l over [0, T] / E(0) (exact: 1)"
   set yrange [0:*]  # fixed range: a share of E(0), drawn from 0

@@ -26,6 +26,7 @@ do for [format in "png svg"] {
   set grid
   # Every key below its panel, in a bottom margin of the same height, so that the panels line up.
   set bmargin 12
+  set offsets graph 0.03, graph 0.03, 0, 0
   set key below maxrows 4 nobox font ",9" title " "
 
   set title "(a) COR = 1: distances between solution paths on the grid"
@@ -34,7 +35,8 @@ do for [format in "png svg"] {
   set format y "10^{%T}"
   set xlabel "time step h [s]"
   set ylabel "max_l |u_a(t_l) - u_b(t_l)| [m]"
-  set autoscale xy
+  set xrange [*:*] noextend
+  set autoscale y
   paths(name) = results.'/paths_'.name.'.csv'
   plot paths('f0') skip 1 using 1:3 with linespoints pt 5 ps 0.7 lc rgb c3 \
          title "direct - exact, f = 0, t* = 5 on the grid", \
