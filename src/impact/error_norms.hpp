@@ -125,6 +125,8 @@ class ErrorObserver {
     e.run = run;
     return e;
   }
+  // The reference's first impact time (known once the samples have passed it).
+  std::optional<double> reference_first_impact() const { return exact_.first_impact(); }
   // The time spent evaluating the reference so far (wall clock, seconds).
   double reference_seconds() const { return reference_seconds_; }
 
