@@ -9,10 +9,14 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "analysis/error_analysis/error_analysis.hpp"
 #include "analysis/error_analysis/error_bounds.hpp"
 #include "analysis/reference.hpp"
+#include "impact/registry.hpp"
+#include "impact/run.hpp"
+#include "impact/scene.hpp"
 
 using namespace impact;
 using namespace impact::error_analysis;
@@ -95,6 +99,42 @@ TEST_CASE("error_analysis: the bounds' arithmetic", "[error_analysis]") {
   CHECK(d.dv == Approx(0.1));
   // Lemma 2.2's rebound is |1 - 2 theta| V for f = 0 (C24).
   CHECK(direct_scheme_rebound(3.0, 0.25, 0.0, 0.1) == Approx(1.5));
+}
+
+TEST_CASE(
+    "Lemma 2.2: without COR, direct on the floor with 0 < v <= g h / 2 stays there with v "
+    "alternating, and leaves above g h / 2",
+    "[error_analysis]") {
+  // From the floor with the velocity w the free flight ends at d = h w - g h^2 / 2: a contact step
+  // when d <= 0, whose (4-2) returns w - g h - 2 d / h = -w; from -w the next one returns w. So a
+  // rebound 0 < W <= g h / 2 after an impact does not leave the floor (Lemma 2.2's third case).
+  // Rounding: d's two terms are of the size g h^2 / 2; w within 1e-9 of the threshold keeps d's
+  // sign clear of it (10^-9 against a relative rounding of 1e-16). Each step's v carries a
+  // rounding of a few ulp of g h (1.7e-18 m/s each), over 10^4 steps at most 1e-14 m/s; measured:
+  // at most 3.0e-18 m/s.
+  const double g = 9.80665, h = 1e-3, threshold = g * h / 2;
+  for (const double w : {1e-6 * threshold, 0.3 * threshold, (1 - 1e-9) * threshold}) {
+    INFO("v0 = " << w);
+    const Scene scene = make_scene(Model{.f = -g}, {0.0, w}, 10.0, h, DirectParams{});
+    AnyStepper stepper = make_stepper(scene);
+    std::int64_t left = -1;
+    double drift = 0;
+    simulate(stepper, scene.initial, scene.grid, [&](std::int64_t l, const State& s, auto&&) {
+      if (left < 0 && s.u != 0.0) left = l;
+      drift = std::fmax(drift, std::fabs(s.v - (l % 2 == 0 ? w : -w)));
+    });
+    CHECK(left == -1);
+    CHECK(drift <= 1e-14);
+  }
+  // Just above the threshold the first step is a free one.
+  const double w = (1 + 1e-9) * threshold;
+  const Scene scene = make_scene(Model{.f = -g}, {0.0, w}, 2 * h, h, DirectParams{});
+  AnyStepper stepper = make_stepper(scene);
+  std::vector<State> states;
+  simulate(stepper, scene.initial, scene.grid,
+           [&](std::int64_t, const State& s, auto&&) { states.push_back(s); });
+  REQUIRE(states.size() == 3);
+  CHECK(states[1].u > 0);
 }
 
 TEST_CASE(

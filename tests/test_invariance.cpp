@@ -69,8 +69,8 @@ Difference compare(const Run& moved, const Run& reference, double shift, std::si
     const Event &a = moved.events[k], &b = reference.events[first + k];
     d.same_shape = d.same_shape && a.kind == b.kind;
     d.event_t = std::fmax(d.event_t, std::fabs(a.t + t_shift - b.t));
-    d.event_v = std::fmax(d.event_v, std::fmax(std::fabs(a.v_before - b.v_before),
-                                               std::fabs(a.v_after - b.v_after)));
+    d.event_v = std::fmax(
+        d.event_v, std::fmax(std::fabs(a.v_before - b.v_before), std::fabs(a.v_after - b.v_after)));
   }
   return d;
 }
@@ -227,9 +227,9 @@ TEST_CASE("invariance: a force of t started s later from the state at s is the s
     const char* name;
     Model from_zero, from_s;
   };
-  for (const Pair& pair : {Pair{"expression", expression, later},
-                           Pair{"harmonic", harmonic, harmonic_later},
-                           Pair{"harmonic, no COR", elastic, elastic_later}}) {
+  for (const Pair& pair :
+       {Pair{"expression", expression, later}, Pair{"harmonic", harmonic, harmonic_later},
+        Pair{"harmonic, no COR", elastic, elastic_later}}) {
     for (const MethodInfo* m : methods_for(pair.from_zero)) {
       if (!pair.from_zero.cor && m->can.restitution) continue;  // the no-COR pair is penalty's
       INFO(m->name << ", " << pair.name);
