@@ -9,9 +9,11 @@
 // (0, 0) where it is (phi, 0)) passes every test run on a floor at 0 and fails these.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <sstream>
 #include <string>
 #include <vector>
 
+#include "cli_support.hpp"
 #include "impact/format.hpp"
 #include "impact/registry.hpp"
 #include "impact/run_scene.hpp"
@@ -21,16 +23,16 @@ using namespace impact;
 
 namespace {
 
-struct Run {
+struct Motion {
   std::vector<OutputRow> rows;
   std::vector<Event> events;
 };
 
-Run run(const Model& model, const State& start, double T, double h, const MethodParams& method) {
+Motion run(const Model& model, const State& start, double T, double h, const MethodParams& method) {
   Scene scene = make_scene(model, start, T, h, method);
   scene.output.channels = {Channel::u, Channel::v, Channel::N};
   AnyStepper stepper = make_stepper(scene);
-  Run out;
+  Motion out;
   RunOutputs outputs;
   outputs.rows = [&](const OutputRow& r) { out.rows.push_back(r); };
   outputs.events = [&](const Event& e) { out.events.push_back(e); };
@@ -44,7 +46,7 @@ struct Difference {
   bool same_shape = true;  // as many rows and events, of the same kinds
 };
 
-Difference compare(const Run& moved, const Run& reference, double shift, std::size_t steps,
+Difference compare(const Motion& moved, const Motion& reference, double shift, std::size_t steps,
                    double t_shift) {
   Difference d;
   d.same_shape = moved.rows.size() + steps <= reference.rows.size() &&
@@ -156,10 +158,10 @@ TEST_CASE("invariance: a floor moved to phi with the force in u - phi moves the 
   const double T = 5, h = 1e-3;
   for (bool drive : {false, true}) {
     for (const MethodInfo* m : methods_for(oscillator(0, drive))) {
-      const Run at_zero = run(oscillator(0, drive), {1, 0}, T, h, m->defaults);
+      const Motion at_zero = run(oscillator(0, drive), {1, 0}, T, h, m->defaults);
       for (double phi : {5.0, -2.5}) {
         INFO(m->name << (drive ? ", driven" : ", free") << ", phi = " << phi);
-        const Run moved = run(oscillator(phi, drive), {phi + 1, 0}, T, h, m->defaults);
+        const Motion moved = run(oscillator(phi, drive), {phi + 1, 0}, T, h, m->defaults);
         const Difference d = compare(moved, at_zero, phi, 0, 0);
         INFO("u " << d.u << ", v " << d.v << ", N " << d.N << ", event t " << d.event_t
                   << ", event v " << d.event_v);
@@ -177,14 +179,14 @@ TEST_CASE("invariance: internal variables read at u - phi follow the floor, in f
   // 3.2e-15, v 3.2e-14, z 2.4e-15, N 2.7e-9 (direct), event times 6.7e-15.
   const double T = 5, h = 1e-3;
   for (const MethodInfo* m : methods_for(with_memory(0))) {
-    const Run at_zero = run(with_memory(0), {1, 0}, T, h, m->defaults);
+    const Motion at_zero = run(with_memory(0), {1, 0}, T, h, m->defaults);
     // The scene does what it is for: the particle rests and lifts off again.
     std::size_t lifts = 0;
     for (const Event& e : at_zero.events) lifts += e.kind == EventKind::lift;
     CHECK(lifts >= 1);
     for (double phi : {5.0, -2.5}) {
       INFO(m->name << ", phi = " << phi);
-      const Run moved = run(with_memory(phi), {phi + 1, 0}, T, h, m->defaults);
+      const Motion moved = run(with_memory(phi), {phi + 1, 0}, T, h, m->defaults);
       const Difference d = compare(moved, at_zero, phi, 0, 0);
       INFO("u " << d.u << ", v " << d.v << ", N " << d.N << ", z " << d.z << ", event t "
                 << d.event_t);
@@ -233,9 +235,9 @@ TEST_CASE("invariance: a force of t started s later from the state at s is the s
     for (const MethodInfo* m : methods_for(pair.from_zero)) {
       if (!pair.from_zero.cor && m->can.restitution) continue;  // the no-COR pair is penalty's
       INFO(m->name << ", " << pair.name);
-      const Run whole = run(pair.from_zero, {1, 0}, T, h, m->defaults);
+      const Motion whole = run(pair.from_zero, {1, 0}, T, h, m->defaults);
       REQUIRE(whole.rows.size() > steps);
-      const Run rest = run(pair.from_s, whole.rows[steps].state, T - s, h, m->defaults);
+      const Motion rest = run(pair.from_s, whole.rows[steps].state, T - s, h, m->defaults);
       const Difference d = compare(rest, whole, 0, steps, s);
       INFO("u " << d.u << ", v " << d.v << ", N " << d.N << ", event t " << d.event_t
                 << ", event v " << d.event_v);
@@ -291,7 +293,7 @@ TEST_CASE(
   // 1e-11 s and 1e-10 m/s (measured: 3.6e-15 s and 3.6e-15 m/s); the rest starts within the chatter
   // cut-off's window of the Zeno time (C12's 6.1e-8 s on Figure 4; measured 6.2e-8 s early).
   {
-    const Run r = run(model, {phi + 1, 0}, T, h, EventDrivenParams{});
+    const Motion r = run(model, {phi + 1, 0}, T, h, EventDrivenParams{});
     std::vector<Event> impacts;
     for (const Event& e : r.events)
       if (e.kind == EventKind::impact) impacts.push_back(e);
@@ -307,6 +309,27 @@ TEST_CASE(
     CHECK(std::fabs(stick.t - exact.zeno) <= 1e-7);
     CHECK(r.rows.back().state.u == phi);
   }
+  // The same scene as a user writes it, through `impact run --events`: the floor's phi comes from
+  // the scene file.
+  {
+    const testing::TempDir dir;
+    dir.write("oscillator.toml",
+              "[initial]\nu0 = 6.0\nv0 = 0.0\n[floor]\nphi = 5.0\ncor = 0.8\n[force]\n"
+              "expression = \"-9.80665 - 50 * (u - 5)\"\n[time]\nT = 5.0\nh = 1e-3\n"
+              "[method]\nname = \"event_driven\"\n");
+    const testing::Result r = dir.run("run oscillator.toml -q -o rows.csv --events events.csv");
+    INFO("stderr: " << r.err);
+    REQUIRE(r.code == 0);
+    std::vector<double> times;
+    std::istringstream events(testing::slurp(dir / "events.csv"));
+    for (std::string line; std::getline(events, line);)
+      if (line.find(",impact,") != std::string::npos) times.push_back(std::stod(line));
+    REQUIRE(times.size() >= 20);
+    for (std::size_t k = 0; k < 20; ++k) {
+      INFO("impact " << k + 1);
+      CHECK(std::fabs(times[k] - exact.t[k]) <= 1e-11);
+    }
+  }
   // direct and moreau_jean are first order: their first 5 impact times (read off their steps) are
   // off by -0.19 h .. 4.1 h (direct) and 0.15 h .. 8.9 h (moreau_jean) at h = 1e-3, growing with k
   // as Theorem 3.1's delays do; at h = 1e-4 the largest is at most a fifth of that at 1e-3 (a
@@ -318,7 +341,7 @@ TEST_CASE(
     const double steps[2] = {1e-3, 1e-4};
     for (int i = 0; i < 2; ++i) {
       INFO(method_name(method) << ", h = " << steps[i]);
-      const Run r = run(model, {phi + 1, 0}, T, steps[i], method);
+      const Motion r = run(model, {phi + 1, 0}, T, steps[i], method);
       std::vector<Event> impacts;
       for (const Event& e : r.events)
         if (e.kind == EventKind::impact) impacts.push_back(e);
