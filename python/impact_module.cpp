@@ -1,10 +1,13 @@
 // The Python module `impact`: a scene run by the library's own paths (the scene reader, run_scene,
 // the reference solution, the sweep engine of `impact sweep`), its rows handed over as NumPy arrays
-// that hold the same doubles `impact run` writes to CSV. The GIL is released while a run steps.
+// that hold the same doubles `impact run` writes to CSV, under the same names (an internal
+// variable's as the scene names it). The GIL is released while a scene is read and run
+// (module_gil.hpp).
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
@@ -18,6 +21,9 @@
 #include "impact/registry.hpp"
 #include "impact/run.hpp"
 #include "impact/run_scene.hpp"
+#include "impact/version.hpp"
+#include "module_docs.hpp"
+#include "module_gil.hpp"
 #include "module_scene.hpp"
 #include "module_sweep.hpp"
 
@@ -40,8 +46,33 @@ py::ssize_t row_count(const Scene& scene) {
   return static_cast<py::ssize_t>(steps / every + 1 + (steps % every != 0));
 }
 
-// The summary of `impact run` under the names of its provenance sidecar (OUT.json).
-py::dict summary(const RunReport& report) {
+// A float64 column of a row, as the CSV writer (output.cpp) writes it. A channel without a
+// column here is refused before the run, never returned unfilled.
+double row_value(const OutputRow& row, Channel channel) {
+  if (const auto i = internal_index(channel)) return row.internal[*i];
+  switch (channel) {
+    case Channel::u:
+      return row.state.u;
+    case Channel::v:
+      return row.state.v;
+    case Channel::N:
+      return row.contact_force;
+    case Channel::E:
+      return row.energy;
+    default:
+      throw std::logic_error("impact: the Python module has no column for the channel " +
+                             std::string(channel_name(channel)));
+  }
+}
+
+std::string name_of(const Model& model, std::size_t i) {
+  return model.internal[i].name;
+}
+
+// The summary of `impact run` under the names of its provenance sidecar (OUT.json), with each
+// internal variable at T (NAME_T) and, against the reference, their largest error.
+py::dict summary(const RunReport& report, const Model& model,
+                 const std::array<double, kMaxInternal>& internal_T) {
   py::dict out;
   const RunSummary& r = report.summary;
   out["steps"] = r.steps;
@@ -49,12 +80,15 @@ py::dict summary(const RunReport& report) {
   out["iterations"] = r.iterations;
   out["max_iterations_per_step"] = r.max_iterations;
   out["wall_s"] = report.seconds;
+  for (std::size_t i = 0; i < model.internal.size(); ++i)
+    out[py::str(name_of(model, i) + "_T")] = internal_T[i];
   if (!report.errors) return out;
   const ErrorNorms& e = *report.errors;
   out["err_u_sup"] = e.sup_u;
   out["err_v_l1"] = e.l1_v;
   out["err_E_T"] = e.energy_end;
   out["err_first_impact"] = e.first_impact;
+  if (!model.internal.empty()) out["err_internal_sup"] = e.sup_internal;
   out["reference_s"] = report.reference_seconds;
   return out;
 }
@@ -62,67 +96,63 @@ py::dict summary(const RunReport& report) {
 py::dict run(py::handle scene, py::handle set, py::handle method, py::handle every,
              py::handle against) {
   const bool exact = against_exact(against);
-  Run loaded = load(scene_source(scene, set, method, every));
+  const SceneSource source = scene_source(scene, set, method, every);
+  const SignalPoll poll;
+  Run loaded = without_gil([&] { return load(source); });
   const Scene& s = loaded.scene;
   const py::ssize_t rows = row_count(s);
+  OutputRow probe;
+  for (Channel c : s.output.channels)
+    if (c != Channel::iterations) row_value(probe, c);
   // The arrays are made here, with the GIL, and filled in place while the run steps without it.
-  py::array_t<double> t(rows);
+  py::array_t<double> t = zeros<double>(rows);
   std::vector<py::array> columns;
   std::vector<void*> data;
   for (Channel c : s.output.channels) {
     if (c == Channel::iterations)
-      columns.push_back(py::array_t<std::int64_t>(rows));
+      columns.push_back(zeros<std::int64_t>(rows));
     else
-      columns.push_back(py::array_t<double>(rows));
+      columns.push_back(zeros<double>(rows));
     data.push_back(columns.back().mutable_data());
   }
   double* times = t.mutable_data();
   py::ssize_t next = 0;
+  std::array<double, kMaxInternal> internal_T{};
   RunOutputs outputs;
   outputs.rows = [&](const OutputRow& row) {
     if (next == rows) throw std::logic_error("impact: more rows than RowSchedule gives");
     times[next] = s.grid.t(row.l);
     for (std::size_t k = 0; k < s.output.channels.size(); ++k) {
-      auto* x = static_cast<double*>(data[k]);
-      switch (s.output.channels[k]) {
-        case Channel::u:
-          x[next] = row.state.u;
-          break;
-        case Channel::v:
-          x[next] = row.state.v;
-          break;
-        case Channel::N:
-          x[next] = row.contact_force;
-          break;
-        case Channel::E:
-          x[next] = row.energy;
-          break;
-        case Channel::iterations:
-          static_cast<std::int64_t*>(data[k])[next] = row.iterations;
-          break;
-      }
+      const Channel c = s.output.channels[k];
+      if (c == Channel::iterations)
+        static_cast<std::int64_t*>(data[k])[next] = row.iterations;
+      else
+        static_cast<double*>(data[k])[next] = row_value(row, c);
     }
+    internal_T = row.internal;  // the last row is t_n
     ++next;
   };
   outputs.against_exact = exact;
-  RunReport report;
-  {
-    py::gil_scoped_release release;
-    report = run_scene(s, loaded.stepper, outputs);
-  }
+  outputs.check_every = kPollSteps;
+  outputs.check = poll.check();
+  const RunReport report = without_gil([&] { return run_scene(s, loaded.stepper, outputs); });
   if (next != rows) throw std::logic_error("impact: fewer rows than RowSchedule gives");
   py::dict out;
   out["t"] = t;
   for (std::size_t k = 0; k < columns.size(); ++k)
-    out[py::str(std::string(channel_name(s.output.channels[k])))] = columns[k];
+    out[py::str(std::string(channel_name(s.output.channels[k], s.model)))] = columns[k];
   out["method"] = std::string(method_info(s.method).name);
-  out["summary"] = summary(report);
+  out["summary"] = summary(report, s.model, internal_T);
   return out;
 }
 
 py::dict events(py::handle scene, py::handle set, py::handle method) {
-  Run loaded = load(scene_source(scene, set, method, py::none()));
+  const SceneSource source = scene_source(scene, set, method, py::none());
+  const SignalPoll poll;
+  Run loaded = without_gil([&] { return load(source); });
+  const Model& model = loaded.scene.model;
   std::vector<double> t, before, after;
+  std::vector<std::vector<double>> internal(model.internal.size());
   std::vector<EventKind> kinds;
   RunOutputs outputs;
   outputs.events = [&](const Event& e) {
@@ -130,11 +160,11 @@ py::dict events(py::handle scene, py::handle set, py::handle method) {
     kinds.push_back(e.kind);
     before.push_back(e.v_before);
     after.push_back(e.v_after);
+    for (std::size_t i = 0; i < internal.size(); ++i) internal[i].push_back(e.internal[i]);
   };
-  {
-    py::gil_scoped_release release;
-    run_scene(loaded.scene, loaded.stepper, outputs);
-  }
+  outputs.check_every = kPollSteps;
+  outputs.check = poll.check();
+  without_gil([&] { run_scene(loaded.scene, loaded.stepper, outputs); });
   py::list names;
   for (EventKind k : kinds) names.append(std::string(event_name(k)));
   py::dict out;
@@ -142,12 +172,16 @@ py::dict events(py::handle scene, py::handle set, py::handle method) {
   out["kind"] = py::module_::import("numpy").attr("array")(names, "U6");
   out["v_before"] = give(std::move(before));
   out["v_after"] = give(std::move(after));
+  for (std::size_t i = 0; i < internal.size(); ++i)
+    out[py::str(name_of(model, i))] = give(std::move(internal[i]));
   return out;
 }
 
 py::dict exact(py::handle scene, py::array_t<double, py::array::c_style | py::array::forcecast> t,
                py::handle set) {
-  Run loaded = load(scene_source(scene, set, py::none(), py::none()));
+  const SceneSource source = scene_source(scene, set, py::none(), py::none());
+  const SignalPoll poll;
+  Run loaded = without_gil([&] { return load(source); });
   const Scene& s = loaded.scene;
   const py::ssize_t n = t.size();
   const double* times = t.data();
@@ -155,10 +189,16 @@ py::dict exact(py::handle scene, py::array_t<double, py::array::c_style | py::ar
     if (!std::isfinite(times[i]))
       throw py::value_error("t[" + std::to_string(i) + "] = " + round_trip(times[i]) +
                             ": the times must be finite");
-  py::array_t<double> u(n), v(n);
+  const std::size_t m = s.model.internal.size();
+  py::array_t<double> u = zeros<double>(n), v = zeros<double>(n);
+  std::vector<py::array_t<double>> z;
+  std::vector<double*> zs;
+  for (std::size_t i = 0; i < m; ++i) {
+    z.push_back(zeros<double>(n));
+    zs.push_back(z.back().mutable_data());
+  }
   double *us = u.mutable_data(), *vs = v.mutable_data();
-  {
-    py::gil_scoped_release release;
+  without_gil([&] {
     // The reference follows its events forward in time: the times in increasing order.
     std::vector<py::ssize_t> order(static_cast<std::size_t>(n));
     std::iota(order.begin(), order.end(), py::ssize_t{0});
@@ -166,16 +206,24 @@ py::dict exact(py::handle scene, py::array_t<double, py::array::c_style | py::ar
                      [&](py::ssize_t a, py::ssize_t b) { return times[a] < times[b]; });
     const double end = n > 0 ? std::max(times[order.back()], s.T) : s.T;
     ReferenceSolution reference(s.model, s.initial, end);
-    for (py::ssize_t i : order) {
+    const auto initial_z = with_internal(s.model, s.initial).z;
+    for (std::size_t k = 0; k < order.size(); ++k) {
+      if (k % kPollSteps == 0) poll();
+      const py::ssize_t i = order[k];
       const State at = reference.at(times[i]);
       us[i] = at.u;
       vs[i] = at.v;
+      if (m == 0) continue;
+      // As the errors against the reference take it (error_norms.hpp): z(0) at t <= 0.
+      const auto zi = times[i] > 0 ? reference.internal_at(times[i]) : initial_z;
+      for (std::size_t j = 0; j < m; ++j) zs[j][i] = zi[j];
     }
-  }
+  });
   py::dict out;
   out["t"] = py::array_t<double>(n, times);
   out["u"] = u;
   out["v"] = v;
+  for (std::size_t j = 0; j < m; ++j) out[py::str(name_of(s.model, j))] = z[j];
   return out;
 }
 
@@ -184,29 +232,19 @@ py::dict exact(py::handle scene, py::array_t<double, py::array::c_style | py::ar
 
 PYBIND11_MODULE(impact, m) {
   using namespace impact::python;
-  m.doc() =
-      "impact: a particle falling onto a rigid floor (Ahn and Wolf, Dynamic impact of a "
-      "particle, 2013). Scenes are TOML files, TOML text or dicts, read and checked as `impact "
-      "run` reads them.";
+  // The signatures are written in the docstrings (module_docs.hpp), with the types they take.
+  py::options options;
+  options.disable_function_signatures();
+  m.doc() = kModuleDoc;
+  m.attr("__version__") = std::string(impact::version());
   py::register_exception<impact::SceneError>(m, "SceneError", PyExc_ValueError);
   py::register_exception<impact::NumericalError>(m, "NumericalError", PyExc_ArithmeticError);
   m.def("run", &run, py::arg("scene"), py::kw_only(), py::arg("set") = py::none(),
         py::arg("method") = py::none(), py::arg("every") = py::none(),
-        py::arg("against") = py::none(),
-        "Runs a scene as `impact run` does. Returns a dict: 't' and the scene's output channels "
-        "(u, v, N, E: float64; iterations: int64) as NumPy arrays holding the doubles of the "
-        "CSV rows, 'method', and 'summary': a dict of steps, contact_steps, iterations, "
-        "max_iterations_per_step, wall_s and with against='exact' the errors err_u_sup, "
-        "err_v_l1, err_E_T, err_first_impact, reference_s (the names of impact run's OUT.json). "
-        "set: {'table.key': value} as "
-        "--set; method: method.name; every: output.every. A bad scene raises SceneError (a "
-        "ValueError) with the reader's message.");
+        py::arg("against") = py::none(), kRunDoc);
   m.def("events", &events, py::arg("scene"), py::kw_only(), py::arg("set") = py::none(),
-        py::arg("method") = py::none(),
-        "The impacts, sticks and lifts of a run, as `impact run --events` writes them: a dict "
-        "of arrays t, kind ('impact', 'stick', 'lift'), v_before, v_after.");
+        py::arg("method") = py::none(), kEventsDoc);
   m.def("exact", &exact, py::arg("scene"), py::arg("t"), py::kw_only(), py::arg("set") = py::none(),
-        "The exact solution of the scene's problem (the reference of against='exact') at the "
-        "times t, in any order: a dict of arrays t, u, v.");
+        kExactDoc);
   add_sweep(m);
 }

@@ -22,7 +22,8 @@ struct SceneSource {
 // scene: a path (str or os.PathLike), a TOML text (a str with a newline) or a dict of tables;
 // set: a dict {"table.key": value} or a list of "table.key=value" strings; method and every, when
 // not None, add method.name and output.every after them. Throws pybind11::type_error for an
-// argument of the wrong type.
+// argument of the wrong type, SceneError (a ValueError) naming the key path for a dict or list
+// that contains itself or nests deeper than a scene does.
 SceneSource scene_source(pybind11::handle scene, pybind11::handle set, pybind11::handle method,
                          pybind11::handle every);
 
@@ -30,7 +31,9 @@ SceneSource scene_source(pybind11::handle scene, pybind11::handle set, pybind11:
 Run load(const SceneSource& source);
 
 // The text of a --set value: TOML's spelling of a bool or a number (a float in round-trip
-// precision), a string as it is (the reader takes a bare word as a string).
-std::string set_value(pybind11::handle value);
+// precision; a NumPy scalar as the number it holds) or of a list, a string as it is (the reader
+// takes a bare word as a string). Anything else (None, a dict, ...) is a SceneError naming
+// `what` (e.g. "set['time.h']").
+std::string set_value(pybind11::handle value, const std::string& what);
 
 }  // namespace impact::python

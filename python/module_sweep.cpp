@@ -4,6 +4,7 @@
 #include <sys/mman.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <charconv>
 #include <limits>
 #include <string>
@@ -15,6 +16,8 @@
 #include "cli/sweep_runner.hpp"
 #include "give_array.hpp"
 #include "impact/atomic_file.hpp"
+#include "module_docs.hpp"
+#include "module_gil.hpp"
 #include "module_scene.hpp"
 
 namespace py = pybind11;
@@ -86,49 +89,85 @@ py::dict columns(const std::string& csv) {
   return out;
 }
 
+// vary's value for one key as --vary's SPEC: a str as it is, a sequence of numbers comma-joined.
+std::string axis_spec(const std::string& key, py::handle spec) {
+  if (py::isinstance<py::str>(spec)) return spec.cast<std::string>();
+  if (!py::isinstance<py::sequence>(spec) && !py::hasattr(spec, "__array__"))
+    throw SceneError("vary['" + key + "'] = " + py::repr(spec).cast<std::string>() +
+                     ": give 'a:b:n', 'a:b:n:log', 'v1,v2,...' or a sequence of numbers");
+  std::string text;
+  for (py::handle value : spec) {  // a NumPy scalar as the Python number it holds (set_value)
+    if (!text.empty()) text += ',';
+    text += set_value(value, "vary['" + key + "']");
+  }
+  return text;
+}
+
+// summary: one str as --summary takes it, or a sequence of names.
+std::string summary_list(py::handle summary) {
+  if (summary.is_none()) return "";
+  if (py::isinstance<py::str>(summary)) return summary.cast<std::string>();
+  std::string list;
+  for (py::handle name : summary) {
+    if (!py::isinstance<py::str>(name))
+      throw SceneError("summary: " + py::repr(name).cast<std::string>() +
+                       " is not a quantity's name (a str)");
+    if (!list.empty()) list += ',';
+    list += name.cast<std::string>();
+  }
+  return list;
+}
+
+// threads as --threads takes it (1 to kMaxThreads), None or 0 for one per core.
+int thread_count(py::handle threads) {
+  if (threads.is_none()) return 0;
+  const std::string text = py::repr(threads).cast<std::string>();
+  const std::string allowed = ": 1 to " + std::to_string(cli::kMaxThreads) +
+                              " as impact sweep --threads, or None or 0 for one per core";
+  if (!py::isinstance<py::int_>(threads) || py::isinstance<py::bool_>(threads))
+    throw SceneError("threads = " + text + allowed);
+  const py::int_ n = py::reinterpret_borrow<py::int_>(threads);
+  if (n < py::int_(0) || n > py::int_(cli::kMaxThreads))
+    throw SceneError("threads = " + text + allowed);
+  return n.cast<int>();
+}
+
 py::dict sweep(py::handle scene, py::dict vary, py::handle summary, py::handle set,
-               py::handle against, int threads) {
+               py::handle against, py::handle threads) {
   SceneSource source = scene_source(scene, set, py::none(), py::none());
   MemoryFile scene_file("impact-scene");
   if (source.path.empty()) {
     scene_file.write(source.text);
     source.path = scene_file.path();
   }
-  std::vector<SweepAxis> axes;
+  std::vector<std::string> axes;
   for (auto [key, spec] : vary) {
-    std::string text = py::str(key).cast<std::string>() + "=";
-    if (py::isinstance<py::str>(spec))
-      text += spec.cast<std::string>();
-    else
-      for (py::handle value : spec) {  // a NumPy scalar as the Python number it holds
-        if (text.back() != '=') text += ',';
-        text += set_value(py::hasattr(value, "item") ? value.attr("item")() : value);
-      }
-    axes.emplace_back(text);
+    const std::string name = py::str(key).cast<std::string>();
+    axes.push_back(name + "=" + axis_spec(name, spec));
   }
-  std::string list;
-  if (!summary.is_none())
-    for (py::handle name : summary) {
-      if (!list.empty()) list += ',';
-      list += py::str(name).cast<std::string>();
-    }
+  const std::string list = summary_list(summary);
   const bool exact = !against.is_none();
   if (exact && py::str(against).cast<std::string>() != "exact")
     throw SceneError("against = " + py::str(against).cast<std::string>() +
                      ": the only reference is 'exact' (or None)");
   const std::vector<cli::Quantity> quantities = cli::parse_summary(list, exact);
-  if (threads <= 0) threads = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  const SweepGrid grid(source.path, source.overrides, std::move(axes));
+  int workers = thread_count(threads);
+  if (workers == 0) workers = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const SignalPoll poll;
   MemoryFile rows("impact-sweep");
-  {
-    py::gil_scoped_release release;
+  // The grid reads the scene file (which may be a named pipe) without the GIL too.
+  const std::int64_t points = without_gil([&] {
+    std::vector<SweepAxis> parsed(axes.begin(), axes.end());
+    const SweepGrid grid(source.path, source.overrides, std::move(parsed));
     AtomicFile file(rows.path());
     std::fputs(cli::csv_header(grid, quantities).c_str(), file.stream());
-    cli::run_points(grid, quantities, exact, cli::Shard{}, threads, "", file, false);
+    cli::run_points(grid, quantities, exact, cli::Shard{}, workers, "", file, false,
+                    {[&] { poll(); }, poll.stop(), kPollSteps});
     file.commit();
-  }
+    return grid.size();
+  });
   py::dict out = columns(rows.read());
-  out["points"] = grid.size();
+  out["points"] = points;
   return out;
 }
 
@@ -137,12 +176,7 @@ py::dict sweep(py::handle scene, py::dict vary, py::handle summary, py::handle s
 void add_sweep(py::module_& m) {
   m.def("sweep", &sweep, py::arg("scene"), py::kw_only(), py::arg("vary"),
         py::arg("summary") = py::none(), py::arg("set") = py::none(),
-        py::arg("against") = py::none(), py::arg("threads") = 0,
-        "`impact sweep` by its own engine: vary {'table.key': 'a:b:n' | 'a:b:n:log' | list of "
-        "numbers} (the last key varies fastest), summary: a list of quantity names (None: the "
-        "default of impact sweep). Returns a dict of columns: the varied keys and the "
-        "quantities as float64 arrays (NaN where a point failed), 'failure' (a list of str, "
-        "empty where the point did not fail) and 'points'.");
+        py::arg("against") = py::none(), py::arg("threads") = py::none(), kSweepDoc);
 }
 
 }  // namespace impact::python

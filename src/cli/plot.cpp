@@ -10,8 +10,8 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "cli/help_format.hpp"
@@ -50,13 +50,31 @@ std::string read_header(CsvLines& lines) {
   return header;
 }
 
+// The first MiB of a regular file; nothing when it is not one (a named pipe would wait for a
+// writer, a device never end) or cannot be read.
+std::string regular_file_head(const std::string& path) {
+  const int fd = open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) return {};
+  struct stat info;
+  std::string text;
+  if (fstat(fd, &info) == 0 && S_ISREG(info.st_mode)) {
+    text.resize(1 << 20);
+    std::size_t got = 0;
+    for (ssize_t n; got < text.size() && (n = read(fd, text.data() + got, text.size() - got)) != 0;)
+      if (n > 0)
+        got += static_cast<std::size_t>(n);
+      else if (errno != EINTR)
+        break;
+    text.resize(got);
+  }
+  close(fd);
+  return text;
+}
+
 // What the provenance sidecar of a run's CSV (CSV.json, written by impact run) says of its force;
-// nothing when there is none, or it is not one of ours (read only as far as 1 MiB).
+// nothing when there is none, it is not a regular file, or it is not one of ours.
 std::optional<bool> force_depends_on_t(const std::string& csv) {
-  std::ifstream in(csv + ".json", std::ios::binary);
-  std::string text(1 << 20, '\0');
-  in.read(text.data(), static_cast<std::streamsize>(text.size()));
-  text.resize(static_cast<std::size_t>(in.gcount()));
+  const std::string text = regular_file_head(csv + ".json");
   for (const bool value : {false, true})
     if (text.find(std::string("\n  \"force_depends_on_t\": ") + (value ? "true" : "false") +
                   ",\n") != std::string::npos)
@@ -64,9 +82,30 @@ std::optional<bool> force_depends_on_t(const std::string& csv) {
   return std::nullopt;
 }
 
+// The figure may not replace what it draws: --out against the CSV, --against and --events, as
+// files (a link, another spelling).
+void check_out(const PlotOptions& o, const std::string& out) {
+  const std::string sidecar = o.csv + ".json";  // read for what the E channel is
+  const std::pair<const std::string*, const char*> inputs[] = {{&o.csv, "the CSV"},
+                                                               {&sidecar, "the CSV's provenance"},
+                                                               {&o.against, "--against"},
+                                                               {&o.events, "--events"}};
+  for (const auto& [input, what] : inputs)
+    if (!input->empty() && same_output(out, *input))
+      throw PlotInputError(printable(out) + ": --out names " + what + " (" + printable(*input) +
+                           "), an input of the figure; give the figure another file name");
+}
+
 Figure read_figure(const PlotOptions& o) {
   CsvLines lines(o.csv);
   const std::string header = read_header(lines);
+  if (is_work_precision_header(header)) {
+    if (!o.against.empty() || !o.events.empty())
+      throw PlotInputError(printable(o.csv) +
+                           ": --against and --events go with the CSV of a run, not of "
+                           "impact work-precision");
+    return read_work_precision_figure(lines, header);
+  }
   const bool extras = !o.against.empty() || !o.events.empty();
   if (extras && (is_sweep_header(header) || is_events_header(header)))
     throw PlotInputError(printable(o.csv) + ": --against and --events go with the CSV of a run, " +
@@ -160,12 +199,16 @@ void run_gnuplot(const std::string& script, const std::vector<std::string>& name
 CLI::App* add_plot_command(CLI::App& app, PlotOptions& o) {
   CLI::App* cmd = app.add_subcommand(
       "plot",
-      "Draw a CSV of impact run (one panel per channel), of its --events, or of impact sweep (one "
-      "panel per quantity against the first varied key) with gnuplot.");
-  cmd->add_option("CSV", o.csv, "A CSV written by impact run, run --events or sweep")->required();
+      "Draw a CSV of impact run, its --events, impact sweep or impact work-precision with "
+      "gnuplot: one panel per channel, internal variable or quantity.");
+  cmd->add_option("CSV", o.csv,
+                  "A CSV written by impact run, run --events, sweep or work-precision")
+      ->required();
   cmd->add_option("--out,-o", o.out,
                   "The figure: .png, .pdf or .svg (default: the CSV's name with .png). Written to "
-                  "a temporary file and renamed when gnuplot succeeds.");
+                  "a temporary file and renamed when gnuplot succeeds; never one of the files it "
+                  "draws (the CSV, its .json, --against, --events), whatever the spelling or "
+                  "link.");
   cmd->add_option("--against", o.against,
                   "Overlay a reference run's channels, dashed: a CSV of impact run, e.g. of the "
                   "exact solution: impact run SCENE --set method.name=exact -o ref.csv");
@@ -188,6 +231,7 @@ int plot_command(const PlotOptions& o) {
   try {
     const std::string out = o.out.empty() ? default_out(o.csv) : o.out;
     const std::string format = figure_format(out);
+    check_out(o, out);
     const std::string script = gnuplot_script(read_figure(o), format);
     AtomicFile file(out);
     try {

@@ -10,23 +10,31 @@
 #include <map>
 
 #include "cli/sweep_csv.hpp"
+#include "impact/channels.hpp"
 #include "impact/output.hpp"
 #include "scene/toml_text.hpp"
 
 namespace impact::cli {
 namespace {
 
-const char* const kChannels[] = {"u", "v", "N", "E", "iterations"};
-
 bool is_channel(const std::string& name) {
-  return std::find(std::begin(kChannels), std::end(kChannels), name) != std::end(kChannels);
+  return std::ranges::any_of(channels(), [&](const ChannelInfo& c) { return c.name == name; });
 }
 
-bool is_quantity(const std::string& name) {
-  for (int q = 0; q <= static_cast<int>(Quantity::err_first_impact); ++q)
-    if (quantity_name(static_cast<Quantity>(q)) == name) return true;
-  return false;
+std::string channel_names() {
+  std::string names;
+  for (const ChannelInfo& c : channels())
+    names += (names.empty() ? "" : ", ") + std::string(c.name);
+  return names;
 }
+
+// A sweep's quantity, or an internal variable at T (NAME_T).
+bool is_quantity(const std::string& name) {
+  return is_quantity_name(name) || (name.size() > 2 && name.ends_with("_T") &&
+                                    is_identifier(name.substr(0, name.size() - 2)));
+}
+
+constexpr const char* kEventsHead = "t,kind,v_before,v_after";
 
 // A scene key as a sweep's header names it: "table.key", letters, digits and '_'.
 bool is_key(const std::string& name) {
@@ -61,6 +69,15 @@ double number(const CsvLines& lines, const std::string& field, const std::string
 }
 
 }  // namespace
+
+bool is_identifier(const std::string& name) {
+  const auto letter = [](char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
+  };
+  return !name.empty() && letter(name[0]) && std::all_of(name.begin(), name.end(), [&](char c) {
+    return letter(c) || (c >= '0' && c <= '9');
+  });
+}
 
 CsvLines::CsvLines(const std::string& path, std::int64_t max_rows)
     : path_(path),
@@ -200,12 +217,16 @@ RunData read_run(CsvLines& lines, const std::string& header) {
     lines.reject("not a CSV of impact run, sweep or --events (its header is '" + cut(header) +
                  "'; a run's is t,<channels>)");
   for (std::size_t c = 1; c < fields.size(); ++c) {
-    if (!is_channel(fields[c]))
+    const bool channel = is_channel(fields[c]);
+    if (!channel && (!is_identifier(fields[c]) || fields[c] == "t"))
       lines.reject("unknown channel '" + cut(fields[c]) +
-                   "' in the header (a run's channels: u, v, N, E, iterations)");
+                   "' in the header (a run's channels: " + channel_names() +
+                   ", and internal variables by name: a letter or '_' followed by letters, "
+                   "digits or '_')");
     if (std::count(fields.begin(), fields.end(), fields[c]) > 1)
       lines.reject("the channel '" + fields[c] + "' is in the header twice");
     run.channels.push_back(fields[c]);
+    run.internal.push_back(!channel);
   }
   run.curves.resize(run.channels.size());
   for (std::string line; lines.next(line); ++run.rows) {
@@ -219,15 +240,24 @@ RunData read_run(CsvLines& lines, const std::string& header) {
 }
 
 bool is_events_header(const std::string& header) {
-  return header == "t,kind,v_before,v_after";
+  const std::string head = kEventsHead;
+  return header.starts_with(head) && (header.size() == head.size() || header[head.size()] == ',');
 }
 
 EventsData read_events(CsvLines& lines, const std::string& header) {
   if (!is_events_header(header))
     lines.reject("not an events CSV of impact run (its header is '" + cut(header) +
-                 "', expected t,kind,v_before,v_after)");
+                 "', expected t,kind,v_before,v_after and the internal variables' names)");
   EventsData events;
-  const std::vector<std::string> columns = split_fields(header);
+  const std::vector<std::string> columns = header_fields(lines, header);
+  for (std::size_t c = 4; c < columns.size(); ++c) {
+    if (!is_identifier(columns[c]) || std::count(columns.begin(), columns.end(), columns[c]) > 1)
+      lines.reject("the header's '" + cut(columns[c]) +
+                   "' after v_after is not the name of an internal variable (a letter or '_' "
+                   "followed by letters, digits or '_', once)");
+    events.internal.push_back(columns[c]);
+  }
+  events.internal_curves.resize(events.internal.size());
   for (std::string line; lines.next(line);) {
     const std::vector<std::string> row = row_fields(lines, line, columns.size());
     const auto kind =
@@ -237,6 +267,8 @@ EventsData read_events(CsvLines& lines, const std::string& header) {
     const double t = number(lines, row[0], "t");
     events.before[kind].add(t, number(lines, row[2], "v_before"));
     events.after[kind].add(t, number(lines, row[3], "v_after"));
+    for (std::size_t i = 0; i < events.internal.size(); ++i)
+      events.internal_curves[i][kind].add(t, number(lines, row[4 + i], events.internal[i]));
     ++events.count[kind];
   }
   return events;
@@ -259,7 +291,8 @@ SweepData read_sweep(CsvLines& lines, const std::string& header) {
   for (; c + 1 < fields.size(); ++c) {
     if (!is_quantity(fields[c]))
       lines.reject("unknown quantity '" + cut(fields[c]) +
-                   "' in the header (impact sweep --help lists them)");
+                   "' in the header (impact sweep --help lists them; an internal variable at T "
+                   "is NAME_T)");
     sweep.quantities.push_back(fields[c]);
   }
   if (sweep.keys.empty() || sweep.quantities.empty())

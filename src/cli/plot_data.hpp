@@ -1,8 +1,10 @@
 // What `impact plot` reads: the CSVs of impact run (t,<channels>), of --events
-// (t,kind,v_before,v_after) and of impact sweep (<keys>,<quantities>,failure), read line by line
-// within fixed bounds, and each curve thinned to what a figure can show.
+// (t,kind,v_before,v_after[,<internal variables>]) and of impact sweep
+// (<keys>,<quantities>,failure), read line by line within fixed bounds, and each curve thinned to
+// what a figure can show. (The table of impact work-precision: plot_work_precision.cpp.)
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <cstdio>
 #include <memory>
@@ -90,9 +92,15 @@ class Curve {
   double low_ = 0, high_ = 0, x_low_ = 0, x_high_ = 0;
 };
 
-// A run's CSV: its channels and one curve of each against t.
+// A name an internal variable may have (internal.cpp): a letter or '_' followed by letters,
+// digits or '_'.
+bool is_identifier(const std::string& name);
+
+// A run's CSV: its channels and one curve of each against t. A channel is one of impact's
+// (channels.hpp) or an internal variable's name.
 struct RunData {
   std::vector<std::string> channels;
+  std::vector<bool> internal;  // per channel: an internal variable
   std::vector<Curve> curves;
   std::int64_t rows = 0;
   // Whether the run's force depends on t, from its provenance sidecar (CSV.json), when there is
@@ -102,11 +110,14 @@ struct RunData {
 RunData read_run(CsvLines& lines, const std::string& header);
 
 // An events CSV: v_before and v_after against t, one pair of curves per kind (impact, stick,
-// lift); the t of the kept points mark the events on a run's panels.
+// lift), and each internal variable at the events, one curve per kind; the t of the kept points
+// mark the events on a run's panels.
 struct EventsData {
   static constexpr const char* kKinds[] = {"impact", "stick", "lift"};
   Curve before[3], after[3];
   std::int64_t count[3] = {};
+  std::vector<std::string> internal;                  // the internal variables' names
+  std::vector<std::array<Curve, 3>> internal_curves;  // [variable][kind]
 };
 EventsData read_events(CsvLines& lines, const std::string& header);
 bool is_events_header(const std::string& header);

@@ -45,7 +45,25 @@ const std::map<std::string, std::string> kQuantityLabels = {
     {"err_v_l1", "h sum |v - v_exact| [m]"},
     {"err_E_T", "|E(T) - E_exact(T)| [J/kg]"},
     {"err_first_impact", "first impact time error [s]"},
+    {"reference_s", "wall time of the reference [s]"},
 };
+
+// The y label of a run's channel: its style's, else an internal variable's or the channel's name.
+ChannelStyle channel_style(const RunData& run, std::size_t c, std::string& label) {
+  const std::string& name = run.channels[c];
+  if (!run.internal[c])
+    if (const auto it = kChannelStyles.find(name); it != kChannelStyles.end()) {
+      label = it->second.ylabel;
+      return it->second;
+    }
+  label = name + "(t)" + (run.internal[c] ? " (internal variable)" : "");
+  return {nullptr, false};
+}
+
+std::string quantity_label(const std::string& name) {
+  if (const auto it = kQuantityLabels.find(name); it != kQuantityLabels.end()) return it->second;
+  return name.substr(0, name.size() - 2) + " (internal variable) at the last grid time";
+}
 
 // The E channel is (3-1) for a constant force; with f(t) the CSV does not say which it is: its
 // provenance sidecar does, and without one both are named.
@@ -102,8 +120,9 @@ Figure run_figure(const RunData& run, const RunData* against, const EventsData* 
                                       "(README, 'Time-dependent force')"}
                                : Text{"E = v^2/2 - f u (3-1)"});
   for (std::size_t c = 0; c < run.channels.size(); ++c) {
-    const ChannelStyle& style = kChannelStyles.at(run.channels[c]);
-    Panel panel{.xlabel = "t [s]", .ylabel = style.ylabel};
+    std::string ylabel;
+    const ChannelStyle style = channel_style(run, c, ylabel);
+    Panel panel{.xlabel = "t [s]", .ylabel = ylabel};
     const Curve& curve = run.curves[c];
     const Curve* reference = nullptr;
     if (against) {
@@ -164,6 +183,16 @@ Figure events_figure(const EventsData& events) {
       break;
     }
   figure.panels.push_back(std::move(panel));
+  // One panel per internal variable: its value at each event, by kind.
+  for (std::size_t i = 0; i < events.internal.size(); ++i) {
+    Panel z{.xlabel = "t [s]", .ylabel = events.internal[i] + " (internal variable) at the event"};
+    for (std::size_t k = 0; k < 3; ++k)
+      if (events.count[k] > 0)
+        z.series.push_back(series(events.internal_curves[i][k].points(),
+                                  std::string("points pt 7 ps 0.6 lc rgb ") + kKindColours[k],
+                                  {std::string(EventsData::kKinds[k])}));
+    figure.panels.push_back(std::move(z));
+  }
   return figure;
 }
 
@@ -193,7 +222,7 @@ Figure sweep_figure(const SweepData& sweep) {
     figure.title.push_back(kEnergyNote);
   for (std::size_t q = 0; q < sweep.quantities.size(); ++q) {
     Panel panel{.xlabel = sweep.keys[0],
-                .ylabel = sweep.quantities[q] + ": " + kQuantityLabels.at(sweep.quantities[q])};
+                .ylabel = sweep.quantities[q] + ": " + quantity_label(sweep.quantities[q])};
     panel.log_x = x_positive && x_high >= 100 * x_low;
     bool y_positive = true;
     double y_low = 0, y_high = 0;

@@ -56,4 +56,9 @@ Figure events_figure(const EventsData& events);
 // A sweep: one panel per quantity against the first varied key, one curve per value of the others.
 Figure sweep_figure(const SweepData& sweep);
 
+// The table of impact work-precision (plot_work_precision.cpp): the figure of its --plot, every
+// error measure against CPU time and against h, one curve per method.
+bool is_work_precision_header(const std::string& header);
+Figure read_work_precision_figure(CsvLines& lines, const std::string& header);
+
 }  // namespace impact::cli

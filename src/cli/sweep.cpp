@@ -55,7 +55,7 @@ CLI::App* add_sweep_command(CLI::App& app, SweepOptions& o) {
   cmd->add_option("--against", o.against,
                   "exact: add the error measures against the exact solution (err_*)");
   cmd->add_option("--threads", o.threads, "Threads (default: one per core)")
-      ->check(CLI::Range(1, 4096));
+      ->check(CLI::Range(1, kMaxThreads));
   cmd->add_option("--shard", o.shard,
                   "K/N: run only points K-1, K-1+N, K-1+2N, ... (1 <= K <= N) and write a part "
                   "for --merge");

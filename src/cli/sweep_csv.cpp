@@ -111,6 +111,11 @@ std::string_view quantity_name(Quantity q) {
   return kQuantities[static_cast<int>(q)].name;
 }
 
+bool is_quantity_name(std::string_view name) {
+  return std::any_of(std::begin(kQuantities), std::end(kQuantities),
+                     [&](const QuantityInfo& q) { return q.name == name; });
+}
+
 std::vector<Quantity> parse_summary(const std::string& list, bool against_exact) {
   std::vector<Quantity> quantities;
   if (list.empty()) {

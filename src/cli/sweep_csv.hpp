@@ -41,6 +41,8 @@ std::string quantities_help();
 std::vector<Quantity> parse_summary(const std::string& list, bool against_exact);
 // A name, as in the header.
 std::string_view quantity_name(Quantity q);
+// Whether `name` is a quantity's name.
+bool is_quantity_name(std::string_view name);
 
 // What one point gave: its summary, or why it failed (a NumericalError's message).
 struct PointResult {

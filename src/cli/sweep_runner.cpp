@@ -33,12 +33,13 @@ constexpr std::int64_t kMinEnsemble = 64;
 class Runner {
  public:
   Runner(const SweepGrid& grid, const std::vector<Quantity>& quantities, bool against_exact,
-         Shard shard, const std::string& instruction_set)
+         Shard shard, const std::string& instruction_set, const SweepPoll& poll)
       : grid_(grid),
         quantities_(quantities),
         against_(against_exact),
         shard_(shard),
-        instruction_set_(instruction_set) {
+        instruction_set_(instruction_set),
+        poll_(poll) {
     points_ = shard_points(grid, shard);
     // Points on one grid must be close in the order to share a chunk: a sweep whose grid changes
     // every few points runs point by point, in chunks small enough for every thread to get some.
@@ -63,6 +64,7 @@ class Runner {
     std::vector<Candidate> candidates;
     Scene scene = grid_.base();
     for (std::int64_t p = 0; p < count; ++p) {
+      if (poll_.stop && poll_.stop->load(std::memory_order_relaxed)) throw Interrupted{};
       grid_.apply(point(first + p), scene);
       const auto kind = against_ ? std::nullopt : ensemble_kind(scene);
       if (kind)
@@ -100,7 +102,7 @@ class Runner {
   void run_alone(const Scene& scene, PointResult& result) const {
     const auto start = timed_ ? Clock::now() : Clock::time_point();
     try {
-      result.outcome = summarize(scene, against_);
+      result.outcome = summarize(scene, against_, poll_.stop, poll_.poll_steps);
     } catch (const NumericalError& e) {
       result.failure = e.what();
     }
@@ -139,7 +141,8 @@ class Runner {
       }
       summaries.assign(models.size(), std::nullopt);
       const auto start = timed_ ? Clock::now() : Clock::time_point();
-      summarize_together(begin->kind, begin->grid, models, initial, summaries, instruction_set_);
+      summarize_together(begin->kind, begin->grid, models, initial, summaries, instruction_set_,
+                         poll_.stop, poll_.poll_steps);
       const double share = timed_ ? seconds_since(start) / static_cast<double>(models.size()) : 0;
       for (auto c = begin; c != end; ++c) {
         PointResult& r = results[static_cast<std::size_t>(c->position)];
@@ -161,12 +164,14 @@ class Runner {
   bool against_;
   Shard shard_;
   const std::string& instruction_set_;
+  const SweepPoll& poll_;
   std::int64_t points_ = 0, chunk_ = 1;
   bool timed_ = false;
 };
 
 // At most 4 chunks per thread wait to be written (flat memory).
-std::int64_t run_chunks(const Runner& runner, int threads, AtomicFile& file, Progress& progress) {
+std::int64_t run_chunks(const Runner& runner, int threads, AtomicFile& file, Progress& progress,
+                        const std::function<void()>& poll) {
   const std::int64_t chunks = runner.chunks(), window = 4 * static_cast<std::int64_t>(threads);
   std::vector<Runner::Output> slots(static_cast<std::size_t>(window));
   std::vector<char> ready(static_cast<std::size_t>(window), 0);
@@ -233,10 +238,12 @@ std::int64_t run_chunks(const Runner& runner, int threads, AtomicFile& file, Pro
     {
       std::unique_lock lock(mutex);
       const std::size_t slot = static_cast<std::size_t>(c % window);
+      const auto tick = std::chrono::milliseconds(poll ? 20 : 500);
       while (!stop && !ready[slot])
-        if (changed.wait_for(lock, std::chrono::milliseconds(500)) == std::cv_status::timeout) {
+        if (changed.wait_for(lock, tick) == std::cv_status::timeout) {
           lock.unlock();
           progress.update(done);
+          if (poll) poll();
           lock.lock();
         }
       if (stop) break;
@@ -263,10 +270,11 @@ std::int64_t shard_points(const SweepGrid& grid, const Shard& shard) {
 
 SweepRun run_points(const SweepGrid& grid, const std::vector<Quantity>& quantities,
                     bool against_exact, const Shard& shard, int threads,
-                    const std::string& instruction_set, AtomicFile& file, bool progress) {
-  const Runner runner(grid, quantities, against_exact, shard, instruction_set);
+                    const std::string& instruction_set, AtomicFile& file, bool progress,
+                    const SweepPoll& poll) {
+  const Runner runner(grid, quantities, against_exact, shard, instruction_set, poll);
   Progress shown(progress, runner.points(), Clock::now(), "impact sweep", "points", true);
-  const std::int64_t failed = run_chunks(runner, threads, file, shown);
+  const std::int64_t failed = run_chunks(runner, threads, file, shown, poll.poll);
   return {runner.points(), failed};
 }
 

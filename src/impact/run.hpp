@@ -29,6 +29,10 @@ class NumericalError : public std::runtime_error {
   bool converged = true;  // false: a solve did not converge; true: a non-finite value
 };
 
+// A run stopped because its caller asked it to (RunOutputs::stop, run_scene.hpp); not a
+// std::exception, so that no catch of a run's failures takes it for one.
+struct Interrupted {};
+
 struct RunSummary {
   std::int64_t steps = 0;
   std::int64_t contact_steps = 0;  // steps with N^l > 0

@@ -4,6 +4,7 @@
 // apart from the reference's.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <optional>
 
@@ -24,9 +25,13 @@ struct RunOutputs {
   bool against_exact = false;
   bool summary = false;  // the run's PointSummary in O(1) memory (a sweep's row, summary.hpp)
   StepWatch watch;       // a caller's own observer of every step (out of line); empty: none
-  // Called every check_every steps (a full disk, progress); 0: never.
+  // Called every check_every steps (a full disk, progress, a Ctrl-C seen by the Python module),
+  // with rows or without; 0: never.
   std::int64_t check_every = 0;
   RowStream::Check check;
+  // Set by another thread to stop the run: read every check_every steps (every 1024 where the
+  // summary alone steps, a sweep's point, without a call in the step loop), it throws Interrupted.
+  const std::atomic<bool>* stop = nullptr;
 };
 
 struct RunReport {
@@ -44,7 +49,8 @@ struct RunReport {
 RunReport run_scene(const Scene& scene, AnyStepper& stepper, const RunOutputs& outputs);
 
 // run_scene() of the scene's method with a summary (and the errors against the reference when
-// against_exact): one point of `impact sweep`.
-PointOutcome summarize(const Scene& scene, bool against_exact);
+// against_exact): one point of `impact sweep`; `stop`, when given, read every check_every steps.
+PointOutcome summarize(const Scene& scene, bool against_exact,
+                       const std::atomic<bool>* stop = nullptr, std::int64_t check_every = 0);
 
 }  // namespace impact

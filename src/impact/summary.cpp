@@ -1,5 +1,6 @@
 #include "impact/summary.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace impact {
@@ -33,13 +34,21 @@ std::optional<EnsembleKind> ensemble_kind(const Scene& scene) {
 
 void summarize_together(const EnsembleKind& kind, const Grid& grid, std::span<const Model> models,
                         std::span<const State> initial, std::span<std::optional<PointSummary>> out,
-                        std::string_view instruction_set) {
+                        std::string_view instruction_set, const std::atomic<bool>* stop,
+                        std::int64_t check_every) {
   if (out.size() != models.size())
     throw std::invalid_argument("summarize_together: as many outputs as models are needed");
   Ensemble ensemble(kind.method, models, initial, grid.h, kind.theta);
   if (!instruction_set.empty()) ensemble.use(instruction_set);
   ensemble.keep_summary();
-  ensemble.advance(grid.steps);
+  if (stop && check_every > 0) {
+    while (ensemble.steps_done() < grid.steps) {
+      ensemble.advance(std::min(check_every, grid.steps - ensemble.steps_done()));
+      if (stop->load(std::memory_order_relaxed)) throw Interrupted{};
+    }
+  } else {
+    ensemble.advance(grid.steps);
+  }
   for (std::size_t i = 0; i < out.size(); ++i) {
     const auto index = static_cast<Eigen::Index>(i);
     if (ensemble.failed(index))

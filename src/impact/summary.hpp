@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -89,9 +90,12 @@ std::optional<EnsembleKind> ensemble_kind(const Scene& scene);
 // point i, bit-identical to summarize() of its scene, or nullopt where a step gave a non-finite
 // value (summarize() then names the step and the reason).
 // `instruction_set` picks the ensemble's vector code (Ensemble::use; all give the same bits), empty
-// for the widest this processor has.
+// for the widest this processor has. `stop`, when given, is read every check_every steps (the
+// ensemble advances in pieces of that many steps, the same bits as in one); once it is set,
+// Interrupted is thrown (run.hpp).
 void summarize_together(const EnsembleKind& kind, const Grid& grid, std::span<const Model> models,
                         std::span<const State> initial, std::span<std::optional<PointSummary>> out,
-                        std::string_view instruction_set = {});
+                        std::string_view instruction_set = {},
+                        const std::atomic<bool>* stop = nullptr, std::int64_t check_every = 0);
 
 }  // namespace impact
