@@ -82,30 +82,44 @@ LinearFlight::LinearFlight(const LinearForce& force, double t_a, double u_a, dou
 LinearFlight::Fundamental LinearFlight::fundamental(double tau) const {
   const double k = force_.k, c = force_.c;
   Fundamental fs;
-  if (tau == 0.0) return fs;
-  const double ct = c * tau, kt2 = k * tau * tau;
+  if (tau == 0.0) {
+    fs.series_response = true;  // R = R' = 0
+    return fs;
+  }
+  const double ct = c * tau, kt2 = k * tau * tau, wt = harmonic_ ? force_.omega * tau : 0.0;
   if (std::fabs(ct) <= 1.0 && std::fabs(kt2) <= 1.0) {
-    // y = sum b_n with b_n = a_n tau^n: b_(n+2) = -(c tau (n+1) b_(n+1) + k tau^2
-    // b_n)/((n+2)(n+1)).
-    double p1[2] = {1.0, 0.0}, p2[2] = {0.0, tau}, ps[2] = {0.0, 0.0};
-    double s1 = 1.0, s2 = tau, sp = 0.0;
-    double d1 = 0.0, d2 = 1.0;  // sums of n b_n / tau
+    // Each solution as sum b_n, b_n = a_n tau^n its Taylor terms, from
+    // (n+2)(n+1) b_(n+2) = -c tau (n+1) b_(n+1) - k tau^2 b_n + tau^2 (forcing's n-th term):
+    // the forcing is 0 (p1, p2), 1 (Psi) and a sin(theta_a + omega tau) (R, while omega tau <= 1,
+    // so that a short flight's displacement is accurate relative to itself).
+    fs.series_response = std::fabs(wt) <= 1.0;
+    double p1[2] = {1.0, 0.0}, p2[2] = {0.0, tau}, ps[2] = {0.0, 0.0}, rs[2] = {0.0, 0.0};
+    fs = {1.0, tau, 0.0, 1.0, 0.0, fs.series_response, 0.0, 0.0};
+    double forcing =
+        fs.series_response ? force_.amplitude * tau * tau : 0.0;  // a tau^2 (w tau)^n/n!
+    const double cycle[4] = {sin_a_, cos_a_, -sin_a_, -cos_a_};   // sin(theta_a + n pi/2)
     for (int n = 0; n < kTaylorTerms; ++n) {
       const double denominator = (n + 2.0) * (n + 1.0);
-      const double n1 = -(ct * (n + 1) * p1[1] + kt2 * p1[0]) / denominator;
-      const double n2 = -(ct * (n + 1) * p2[1] + kt2 * p2[0]) / denominator;
-      double np = -(ct * (n + 1) * ps[1] + kt2 * ps[0]) / denominator;
-      if (n == 0) np += tau * tau / 2;  // Psi'' + c Psi' + k Psi = 1
-      s1 += n1;
-      s2 += n2;
-      sp += np;
-      d1 += (n + 2) * n1 / tau;
-      d2 += (n + 2) * n2 / tau;
+      const auto next = [&](const double* b, double source) {
+        return (source - ct * (n + 1) * b[1] - kt2 * b[0]) / denominator;
+      };
+      const double n1 = next(p1, 0.0), n2 = next(p2, 0.0);
+      const double np = next(ps, n == 0 ? tau * tau : 0.0);
+      const double nr = next(rs, forcing * cycle[n % 4]);
+      forcing *= wt / (n + 1);
+      fs.p1 += n1;
+      fs.p2 += n2;
+      fs.psi += np;
+      fs.r += nr;
+      fs.dp1 += (n + 2) * n1 / tau;
+      fs.dp2 += (n + 2) * n2 / tau;
+      fs.dr += (n + 2) * nr / tau;
       p1[0] = p1[1], p1[1] = n1;
       p2[0] = p2[1], p2[1] = n2;
       ps[0] = ps[1], ps[1] = np;
+      rs[0] = rs[1], rs[1] = nr;
     }
-    return {s1, s2, d1, d2, sp};
+    return fs;
   }
   const double qt2 = q_ * tau * tau;
   if (q_ < 0.0 && std::fabs(qt2) >= kSeriesRegime) {
@@ -174,19 +188,19 @@ void LinearFlight::harmonic_response(double tau, const Fundamental& fs, double s
   dr = force_.amplitude * (w * rotated.real() + fs.p2 * sin_a_);
 }
 
-Motion LinearFlight::at(double t) const {
+Motion LinearFlight::relative(double t) const {
   const double tau = t - t_a_;
   const Fundamental fs = fundamental(tau);
-  double r = 0.0, dr = 0.0, forcing = 0.0;
+  double r = fs.r, dr = fs.dr, forcing = 0.0;
   if (harmonic_) {
     double s, c;
     angle(tau, s, c);
-    harmonic_response(tau, fs, s, c, r, dr);
+    if (!fs.series_response) harmonic_response(tau, fs, s, c, r, dr);
     forcing = force_.amplitude * s;
   }
   const double w = v_a_ * fs.p2 + F_ * fs.psi + r;
   const double v = v_a_ * fs.dp2 + F_ * fs.p2 + dr;
-  return {u_a_ + w, v, -force_.k * w - force_.c * v + F_ + forcing};
+  return {w, v, -force_.k * w - force_.c * v + F_ + forcing};
 }
 
 double LinearFlight::window() const {
@@ -242,10 +256,10 @@ DepartureBounds LinearFlight::departure_bounds(double t) const {
   return {C * kBoundMargin, D * kBoundMargin, t + W};
 }
 
-std::optional<Contact> search_linear_contact(const LinearFlight& flight, double phi,
+std::optional<Contact> search_linear_contact(const LinearFlight& flight, double gap_a,
                                              double& certified, double& checked, double horizon,
                                              long& budget) {
-  const LinearGap path{&flight, phi};
+  const LinearGap path{&flight, gap_a};
   while (certified <= horizon && budget > 0) {
     const AccelerationBound b = flight.acceleration_bound(certified);
     if (!(b.until > certified)) {  // a window below the resolution of t: no progress possible

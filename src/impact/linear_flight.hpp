@@ -12,9 +12,11 @@
 // harmonic term from rest. No equilibrium u_eq + f0/k is subtracted, so k -> 0 does not cancel.
 //   - p1, p2 and Psi: e^(-c tau/2) {cos, sin/sqrt(q)} (q = k - c^2/4 > 0), the two exponentials
 //     of the roots (q < 0; the slow root -k/(c/2 + sqrt(-q)) without cancellation), and where
-//     |c| tau and |k| tau^2 are small their Taylor series (so that critical damping, q -> 0, and
-//     short times are no special case); Psi = (1 - p1)/k only where k tau^2 >= 0.05.
-//   - R: the steady state y_p = P sin theta + Q cos theta (P = a (k - omega^2)/Delta,
+//     |c| tau and |k| tau^2 are at most 1 their Taylor series (so that critical damping, q -> 0,
+//     and short times are no special case); Psi = (1 - p1)/k only where k tau^2 > 1/4.
+//   - R: within omega tau <= 1 of that regime, its Taylor series too (a short flight's
+//     displacement is then accurate relative to itself, as a chatter's bounces need); elsewhere
+//     the steady state y_p = P sin theta + Q cos theta (P = a (k - omega^2)/Delta,
 //     Q = -a c omega/Delta, Delta = (k - omega^2)^2 + c^2 omega^2) minus the free motion from its
 //     initial values; its rounding is eps |a|/sqrt(Delta), large near resonance. There (q > 0,
 //     c >= 0, sqrt(Delta) < max(|k|, omega^2)/8) the Duhamel integral R = Im[a e^(i theta_a)
@@ -87,7 +89,14 @@ class LinearFlight {
   // Throws std::invalid_argument for non-finite data or a harmonic term without omega > 0.
   LinearFlight(const LinearForce& force, double t_a, double u_a, double v_a);
 
-  Motion at(double t) const;
+  Motion at(double t) const {
+    Motion m = relative(t);
+    m.u += u_a_;
+    return m;
+  }
+  // The same with u - u_a in place of u: the displacement since the anchor, accurate relative to
+  // itself on a short flight (the gap of a bounce of height 1e-20 on a floor at 0.5).
+  Motion relative(double t) const;
   State state(double t) const {
     const Motion m = at(t);
     return {m.u, m.v};
@@ -105,6 +114,8 @@ class LinearFlight {
  private:
   struct Fundamental {
     double p1 = 1, p2 = 0, dp1 = 0, dp2 = 1, psi = 0;  // p1, p2, their derivatives, int p2
+    bool series_response = false;  // r, dr: the harmonic response by its Taylor series
+    double r = 0, dr = 0;
   };
   Fundamental fundamental(double tau) const;
   // sin and cos of the forcing's angle at tau, from those at the anchor.
@@ -131,21 +142,23 @@ class LinearFlight {
 double reduced_angle(double omega, double t, double phase);
 
 // The gap u - phi of a linear flight as flight_search.hpp's Path: the gap and velocity at t, and
-// the gap's second derivative f(t).
+// the gap's second derivative f(t). gap_a is the gap at the anchor, as the caller knows it (0 for
+// a launch from the floor): the gap is gap_a + (u - u_a), so that it is not rounded to the ulps of
+// phi.
 struct LinearGap {
   const LinearFlight* flight = nullptr;
-  double phi = 0.0;
+  double gap_a = 0.0;
   State at(double t) const {
-    const Motion m = flight->at(t);
-    return {m.u - phi, m.v};
+    const Motion m = flight->relative(t);
+    return {gap_a + m.u, m.v};
   }
-  double force(double t) const { return flight->at(t).a; }
+  double force(double t) const { return flight->relative(t).a; }
 };
 
 // search_contact of flight_search.hpp over the flight's windows, each with its bound: the first
-// contact of the flight with the floor phi, or nullopt once `certified` (no contact before it)
-// passes `horizon` or the budget is used up.
-std::optional<Contact> search_linear_contact(const LinearFlight& flight, double phi,
+// contact of the flight with the floor (the anchor's gap gap_a, see LinearGap), or nullopt once
+// `certified` (no contact before it) passes `horizon` or the budget is used up.
+std::optional<Contact> search_linear_contact(const LinearFlight& flight, double gap_a,
                                              double& certified, double& checked, double horizon,
                                              long& budget);
 
