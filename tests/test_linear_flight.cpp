@@ -177,7 +177,8 @@ TEST_CASE(
   CHECK_FALSE(sampled);
   double certified = 0.0, checked = 0.0;
   long budget = 100000;
-  const auto contact = impact::search_linear_contact(flight, phi, certified, checked, 2.0, budget);
+  const auto contact =
+      impact::search_linear_contact(flight, gamma - phi, certified, checked, 2.0, budget);
   REQUIRE(contact);
   const double t_min = std::numbers::pi / omega, a = 1 + gamma;  // u'' at the minimum
   CHECK_NEAR(contact->t, t_min - std::sqrt(2e-9 / a), 1e-9);
@@ -185,7 +186,7 @@ TEST_CASE(
   // 1e-9 above the minimum instead: no contact within one forcing period.
   certified = checked = 0.0;
   budget = 100000;
-  CHECK_FALSE(impact::search_linear_contact(flight, -gamma - 1e-9, certified, checked,
+  CHECK_FALSE(impact::search_linear_contact(flight, 2 * gamma + 1e-9, certified, checked,
                                             2 * std::numbers::pi / omega, budget));
   CHECK(budget > 0);
 }

@@ -1,5 +1,6 @@
 #include "analysis/impact_oscillator/impact_oscillator.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -7,6 +8,7 @@
 #include "analysis/impact_oscillator/oscillator_law.hpp"
 #include "analysis/impact_oscillator/oscillator_orbits.hpp"
 #include "impact/format.hpp"
+#include "impact/processor.hpp"
 
 namespace impact::impact_oscillator {
 
@@ -46,6 +48,23 @@ toml::table one_step_from(const Oscillator& o, const PeriodOneOrbit& orbit, doub
       {"omega_t0", omega_t0},
       {"next_V_error", next ? next->V - orbit.V : std::nan("")},
       {"next_time_error", next ? next->t - (omega_t0 / o.omega + orbit.T) : std::nan("")}};
+}
+
+// Every number of the table as `path_to_key = value` (dots and other characters as '_'), but
+// those whose name is longer than 45 characters: gnuplot cuts names at 50, and plot.gp reads
+// none of them.
+std::string gnuplot_values(const toml::table& table, const std::string& prefix) {
+  std::string text;
+  for (const auto& [key, node] : table) {
+    std::string name = prefix + std::string(key.str());
+    for (char& c : name)
+      if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+    if (const toml::table* t = node.as_table())
+      text += gnuplot_values(*t, name + "_");
+    else if (const auto x = node.value<double>(); x && node.is_number() && name.size() <= 45)
+      text += name + " = " + (std::isfinite(*x) ? round_trip(*x) : std::string("NaN")) + "\n";
+  }
+  return text;
 }
 
 }  // namespace
@@ -184,6 +203,12 @@ toml::table run_impact_oscillator(const ExperimentContext& context,
   summary.insert("grazing", grazing_summary(context));
   summary.insert("chatter", chatter_summary(context));
   summary.insert("work_precision", work_precision_summary(context, timing));
+  context.write("values.gp", [&] {
+    std::string text = "# The summary's numbers as gnuplot variables, for plot.gp.\n" +
+                       gnuplot_values(summary, "");
+    if (timing) text += "processor = \"" + this_processor().describe() + "\"\n";
+    return text;
+  });
   return toml::table{{"impact_oscillator", summary}};
 }
 

@@ -17,7 +17,8 @@ namespace impact::impact_oscillator {
 
 namespace {
 
-const DiagramSettings kDiagram{};  // 100 periods of transient, 50 kept
+// 100 periods of transient, the impacts of the next 40 kept (at most 32 per point).
+const DiagramSettings kDiagram{100, 40, 32};
 // A diagram point is on the period-one branch when its kept impacts all lie within this of the
 // closed-form speed; its agreement is reported where the multiplier is at most kSettled (the
 // transient of 100 periods has then shrunk a step of the sweep's by 0.9^100 = 3e-5 or more).
