@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -21,9 +22,11 @@ using namespace impact::impact_oscillator;
 namespace {
 
 std::string expression(const LinearForce& f) {
-  return "-" + round_trip(f.k) + "*(u - (" + round_trip(f.u_eq) + ")) - " + round_trip(f.c) +
-         "*v + (" + round_trip(f.f0) + ") + (" + round_trip(f.amplitude) + ")*sin(" +
-         round_trip(f.omega) + "*t + " + round_trip(f.phase) + ")";
+  std::ostringstream out;
+  out << "-" << round_trip(f.k) << "*(u - (" << round_trip(f.u_eq) << ")) - " << round_trip(f.c)
+      << "*v + (" << round_trip(f.f0) << ") + (" << round_trip(f.amplitude) << ")*sin("
+      << round_trip(f.omega) << "*t + " << round_trip(f.phase) << ")";
+  return out.str();
 }
 
 struct Run {
