@@ -154,7 +154,7 @@ do for [format in "png pdf"] {
   stats results.'/sticking_trajectory.csv' skip 1 using ($1 <= 1.6 * chatter_sticking_lift_off ? $2 - 0.5 : NaN) nooutput
   set logscale y
   set format y "10^{%L}"
-  set xrange [0 : 1.6 * chatter_sticking_lift_off]
+  set xrange [* : 1.6 * chatter_sticking_lift_off]
   set yrange [STATS_max * 1e-9 : STATS_max * 3]
   eval vline(1, chatter_sticking_t_inf, "dt 2 lc rgb 'black'")
   eval vline(2, chatter_sticking_lift_off, "dt 3 lc rgb 'black'")
