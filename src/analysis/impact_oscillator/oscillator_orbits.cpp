@@ -58,8 +58,8 @@ double extrapolate(const std::function<double(double)>& multiplier, double near,
   return near - c0 / c1;
 }
 
-const PeriodOneOrbit& require_orbit(const std::optional<PeriodOneOrbit>& orbit,
-                                    const Oscillator& o) {
+// By value: callers pass period_one_orbit's temporary, which a reference would outlive.
+PeriodOneOrbit require_orbit(const std::optional<PeriodOneOrbit>& orbit, const Oscillator& o) {
   if (!orbit)
     throw std::runtime_error("no period-one orbit at omega = " + round_trip(o.omega) +
                              ", r = " + round_trip(o.r) + ", sigma = " + round_trip(o.sigma));
@@ -99,7 +99,7 @@ int branch_impacts(double multiplier) {
 }
 
 OrbitCheck check_branch_point(const Oscillator& o, Runner runner) {
-  const PeriodOneOrbit& orbit = require_orbit(period_one_orbit(o), o);
+  const PeriodOneOrbit orbit = require_orbit(period_one_orbit(o), o);
   const double multiplier = leading_multiplier(orbit_trace(o, orbit.V), o.r);
   // The last impact kept is the k-th: the run ends half a period after it.
   const double T = orbit.t0 + (branch_impacts(multiplier) + 0.5) * orbit.T;
@@ -117,7 +117,7 @@ BranchAgreement agreement(const std::vector<OrbitCheck>& checks) {
 }
 
 double growth_rate(const Oscillator& o, int N, int K, double eps) {
-  const PeriodOneOrbit& orbit = require_orbit(period_one_orbit(o), o);
+  const PeriodOneOrbit orbit = require_orbit(period_one_orbit(o), o);
   Impact x{orbit.t0 + eps, orbit.V + eps};
   std::vector<double> V{x.V};
   for (int i = 0; i < N; ++i) {
