@@ -125,7 +125,7 @@ $(EXPERIMENTS:%=outputs-%): outputs-%: $$($$*_OUTPUTS)
 # figures/, to be committed.
 refresh-timing-figures:
 	@rm -f $(addprefix $(TIMING_DIR)/,$(TIMING_FIGURES))
-	@$(MAKE) work_precision stability performance
+	@$(MAKE) work_precision stability performance impact_oscillator
 	@cp $(addprefix $(TIMING_DIR)/,$(TIMING_FIGURES)) figures/
 	@echo "refresh-timing-figures: $(words $(TIMING_FIGURES)) files copied to figures/"
 

@@ -27,14 +27,18 @@ do for [format in "png svg"] {
   set logscale x
   set xlabel "time step h [s]"
   set format x "10^{%T}"
-  set xrange [5e-7 : 3e-2]
+  set xrange [*:*] noextend
+  set autoscale y
+  # Every key below its panel, three rows each (a blank key title keeps it off the x label), so
+  # that the panels of a row line up; the log axes a little past the data.
+  set offsets graph 0.02, graph 0.02, graph 0.04, graph 0.04
+  set bmargin 10
+  set key below maxrows 3 nobox font ",9" title " "
 
   set title "(a) f = 0: sup-norm error max_l |u^l - u(t_l)|"
   set logscale y
   set format y "10^{%T}"
   set ylabel "error [m]"
-  set yrange [1e-16 : 30]
-  set key bottom right box opaque font ",9"
   plot series('f0_direct') skip 1 using 1:3 with linespoints pt 7 ps 0.8 lc rgb direct \
          title "direct, no COR, t* off grid (u^0 = 5.0123)", \
        series('f0_direct_aligned') skip 1 using 1:3 with linespoints pt 5 ps 0.7 lc rgb aligned \
@@ -48,7 +52,6 @@ do for [format in "png svg"] {
        x with lines dt 2 lc rgb grey title "h (first order)"
 
   set title "(b) f = -9.80665 m/s^2 (u^0 = 5): sup-norm error"
-  set yrange [1e-5 : 30]
   plot series('g_direct') skip 1 using 1:3 with linespoints pt 7 ps 0.8 lc rgb direct \
          title "direct, no COR", \
        series('g_direct_cor') skip 1 using 1:3 with linespoints pt 9 ps 0.8 lc rgb direct_cor \
@@ -62,9 +65,8 @@ do for [format in "png svg"] {
   set title "(c) effective COR of the first impact, -v_a / v_b (no COR given)"
   unset logscale y
   set format y "%g"
-  set ylabel "effective COR"
-  set yrange [-0.05 : 1.15]
-  set key bottom left box opaque font ",9"
+  set ylabel "effective COR [1]"
+  set yrange [-0.05 : 1.15]  # fixed range: a COR lies in [0, 1], drawn whole
   plot series('f0_direct') skip 1 using 1:4 with points pt 7 ps 1.0 lc rgb direct \
          title "direct, f = 0, u^0 = 5.0123", \
        '' skip 1 using 1:(abs(1 - 2 * $2)) with points pt 6 ps 1.8 lc rgb "black" \
@@ -79,8 +81,7 @@ do for [format in "png svg"] {
   set logscale y
   set format y "10^{%T}"
   set ylabel "|(4-9)| [m/s], |(4-10)| [m^2/s], energy [m^2/s^2]"
-  set yrange [1e-14 : 1e4]
-  set key at graph 0.98, graph 0.52 right top box opaque font ",9"
+  set autoscale y
   plot series('g_direct') skip 1 using 1:(abs($6)) with linespoints pt 7 ps 0.8 lc rgb direct \
          title "(4-9) as printed, direct, f = -9.8, no COR", \
        '' skip 1 using 1:(abs($7)) with linespoints pt 6 ps 0.8 lc rgb direct \
@@ -93,6 +94,7 @@ do for [format in "png svg"] {
          title "E^0 - E^n = {/Symbol S} N^l (u^l - {/Symbol f}), direct, f = 0, no COR"
 
   unset multiplot
+  set bmargin
   set output
 }
 
@@ -112,11 +114,11 @@ do for [format in "png svg"] {
   set xlabel "time step h [s]"
   set format x "10^{%T}"
   set format y "10^{%T}"
-  set xrange [5e-7 : 3e-2]
-  set yrange [1e-16 : 30]
+  set xrange [*:*] noextend
+  set autoscale y
   set ylabel "sup-norm error [m]"
   set title "(a) max_l |u^l - u_e(t_l)| against the exact solution u_e with COR e"
-  set key at graph 0.02, graph 0.02 left bottom box opaque font ",9"
+  set key below maxrows 3 nobox font ",9" title " "
   plot series('f0_direct_aligned') skip 1 using 1:3 with linespoints pt 5 ps 0.7 lc rgb aligned \
          title "{/Symbol q} = 0 (u^0 = 5), against e = 1", \
        subsequence('theta_0_25') skip 1 using 2:5 with linespoints pt 7 ps 0.8 lc rgb direct_cor \
@@ -136,9 +138,10 @@ do for [format in "png svg"] {
   set format y "%g"
   set xlabel "t [s]"
   set ylabel "u(t) [m]"
-  set xrange [0 : 10]
-  set yrange [-2.2 : 5.5]
-  set key at graph 0.5, graph 0.02 center bottom maxrows 4 box opaque font ",9" samplen 2
+  unset offsets
+  set xrange [*:*] noextend
+  set autoscale y
+  set key below maxrows 3 nobox font ",9" samplen 2 title " "
   path(k) = results.'/path_theta_'.k.'.csv'
   plot path(0) skip 1 every 10 using 1:2 with points pt 5 ps 0.6 lc rgb aligned \
          title "u_h, {/Symbol q} = 0", \

@@ -28,9 +28,12 @@ do for [format in "png pdf"] {
   set multiplot layout 4,2 columnsfirst title \
       "Figure 3: f = 0, u_0 = 5 m, v_0 = -1 m/s, h = 10^{-3} s; direct vs fb\\_newton vs exact"
   set grid
-  set xrange [0:10]
+  set xrange [*:*] noextend
+  set offsets 0, 0, graph 0.05, graph 0.05
   set xtics 1
-  set key top right box opaque noenhanced
+  # Each key right of its panel, in a margin of the same width everywhere, so the panels line up.
+  set rmargin 25
+  set key outside right top box opaque noenhanced
 
   do for [scene in "no_cor cor075"] {
     label = (scene eq "no_cor") ? "no COR" : "COR = 0.75"
@@ -39,8 +42,7 @@ do for [format in "png pdf"] {
 
     set title sprintf("%s: displacement, max|direct - fb\\_newton| = %.2g m", label, du)
     set ylabel "u(t) [m]"
-    set yrange [-0.3:6]
-    set key top center
+    set autoscale y
     set xlabel "t [s]"
     plot csv(scene, 'direct') skip 1 using 1:2 with lines lw 3 lc rgb blue title "direct", \
          csv(scene, 'fb_newton') skip 1 using 1:2 with lines lw 2 dt 2 lc rgb orange \
@@ -49,8 +51,6 @@ do for [format in "png pdf"] {
 
     set title sprintf("%s: velocity, max|direct - fb\\_newton| = %.2g m/s", label, dv)
     set ylabel "v(t) [m/s]"
-    set yrange [-1.3:1.3]
-    set key bottom right
     plot csv(scene, 'direct') skip 1 using 1:3 with lines lw 3 lc rgb blue title "direct", \
          csv(scene, 'fb_newton') skip 1 using 1:3 with lines lw 2 dt 2 lc rgb orange \
            title "fb_newton", \
@@ -58,31 +58,31 @@ do for [format in "png pdf"] {
 
     set title sprintf("%s: contact force, max|direct - fb\\_newton| = %.2g m/s^2", label, dN)
     set ylabel "N(t) [m/s^2]"
-    set yrange [0:2300]
-    set key top right
+    set yrange [0:*]  # fixed range: a contact force is drawn from 0
     # With COR the spike is the same as without (the landing step has N^{4999} = 0 and is not yet
     # an impact, so the COR acts on the next step), while the exact impulse is (1 + COR) V.
     if (scene eq "cor075") {
       set label 1 "direct, fb\\_newton: N = 2/h = 2000\nat t = 5.001 s, as without COR\n(impulse h N = 2 m/s); exact:\n(1 + COR) V / h = 1750 at t = 5 s" \
-          at 4.7, 1500 right
+          at 5.3, graph 0.55 left font ",9"
     }
     plot csv(scene, 'direct') skip 1 using 1:4 with impulses lw 3 lc rgb blue title "direct", \
          csv(scene, 'fb_newton') skip 1 using 1:($4 > 0 ? $4 : NaN) with points pt 6 ps 1.2 \
-           lc rgb orange title "fb_newton (N > 0)", \
+           lc rgb orange title "fb_newton, N > 0", \
          csv(scene, 'exact') skip 1 using 1:4 with impulses lw 1 lc rgb "black" \
-           title "exact ((1 + e) V / h)"
+           title "exact, (1+e) V/h"
     unset label 1
 
     set title sprintf("%s: energy, max|direct - fb\\_newton| = %.2g J/kg", label, dE)
     set ylabel "E(t) = v^2/2 - f u [J/kg]"
-    set yrange [0:0.6]
-    set key bottom left
+    set yrange [0:*]  # fixed range: energy from 0, so that a loss reads as a share of E(0)
     plot csv(scene, 'direct') skip 1 using 1:5 with lines lw 3 lc rgb blue title "direct", \
          csv(scene, 'fb_newton') skip 1 using 1:5 with lines lw 2 dt 2 lc rgb orange \
            title "fb_newton", \
          csv(scene, 'exact') skip 1 using 1:5 with lines lw 1 lc rgb "black" title "exact"
   }
   unset multiplot
+  set rmargin
+  unset offsets
   set output
 }
 
@@ -99,14 +99,15 @@ do for [format in "png svg"] {
   set title "Figure 3 left (f = 0, no COR): energy kept by the impact, E(T)/E(0), at 201 step sizes h"
   set grid
   set logscale x
-  set xrange [1e-4:1e-2]
+  set xrange [*:*] noextend
+  set autoscale y
+  set offsets 0, 0, graph 0.12, graph 0.05
   set xtics auto
   set format x "10^{%L}"
-  set yrange [-0.05:1.6]
   set ytics 0.2
   set xlabel "h [s]"
-  set ylabel "E(T) / E(0)"
-  set key top right box opaque noenhanced
+  set ylabel "E(T) / E(0) [1]"
+  set key below maxrows 2 nobox noenhanced title " "
   set arrow 1 from 1e-3, graph 0 to 1e-3, graph 1 nohead dt 2 lc rgb "gray40"
   set label 1 "paper's h = 10^{-3}: t* = 5 on the grid" at 0.95e-3, first 1.1 right tc rgb "gray30"
   plot sweep skip 1 using 1:3 with points pt 6 ps 1.2 lc rgb blue title "direct", \

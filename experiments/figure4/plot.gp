@@ -35,10 +35,13 @@ do for [format in "png pdf"] {
   set multiplot layout 4,2 columnsfirst title \
       "Figure 4: f = -9.80665 m/s^2, u_0 = 5 m, v_0 = -1 m/s, h = 10^{-3} s; direct vs fb\\_newton vs exact"
   set grid
-  set xrange [0:10]
+  set xrange [*:*] noextend
+  set offsets 0, 0, graph 0.05, graph 0.05
   set xtics 1
   set xlabel "t [s]"
-  set key top right box opaque noenhanced
+  # Each key right of its panel, in a margin of the same width everywhere, so the panels line up.
+  set rmargin 30
+  set key outside right top box opaque noenhanced
 
   do for [scene in "no_cor cor075"] {
     label = (scene eq "no_cor") ? "no COR" : "COR = 0.75"
@@ -48,28 +51,25 @@ do for [format in "png pdf"] {
     set title sprintf("%s: displacement\nrest at %.3f s (direct), %.3f s (fb\\_newton); %s", \
                       label, rest_d, rest_f, exact_rest)
     set ylabel "u(t) [m]"
-    set yrange [-0.3:7.5]
+    set autoscale y
     # Dotted: where direct rests; without COR, dashed: the paper's rest "at around t = 7.5".
     set arrow 1 from rest_d, graph 0 to rest_d, graph 1 nohead dt 3 lc rgb blue
     if (scene eq "no_cor") {
       set arrow 2 from 7.5, graph 0 to 7.5, graph 1 nohead dt 2 lw 1.5 lc rgb "black"
     }
-    set key maxrows 3
     plot csv(scene, 'direct') skip 1 using 1:2 with lines lw 3 lc rgb blue title "direct", \
          csv(scene, 'fb_newton') skip 1 using 1:2 with lines lw 2 dt 2 lc rgb orange \
            title "fb_newton", \
          csv(scene, 'exact') skip 1 using 1:2 with lines lw 1 lc rgb "black" title "exact", \
          NaN with lines dt 3 lc rgb blue title "direct rests", \
          NaN with lines dt 2 lw 1.5 lc rgb "black" \
-           title (scene eq "no_cor" ? "paper: rests around 7.5 s" : "")
-    set key maxrows auto
+           title (scene eq "no_cor" ? "paper: rest ~7.5 s" : "")
     unset arrow 1
     unset arrow 2
 
     set title sprintf("%s: velocity, max|direct - fb\\_newton| = %.2g m/s", label, \
                       value('diff_'.scene.'_v'))
     set ylabel "v(t) [m/s]"
-    set yrange [-11:13]
     plot csv(scene, 'direct') skip 1 using 1:3 with lines lw 3 lc rgb blue title "direct", \
          csv(scene, 'fb_newton') skip 1 using 1:3 with lines lw 2 dt 2 lc rgb orange \
            title "fb_newton", \
@@ -77,14 +77,14 @@ do for [format in "png pdf"] {
 
     # Without COR the scheme rests in a period-2 chatter (u = phi, v = +-c, N = |f| -+ 2c/h on
     # alternate steps; README), which at this scale looks like two constant forces: the title
-    # says so. The y range leaves the top to the key.
+    # says so.
     chatter = (scene eq "no_cor") ? \
-        "\nafter rest: period-2 chatter, N = |f| - 2c/h and |f| + 2c/h on alternate steps (v = -c, +c)" : ""
+        "\nafter rest: period-2 chatter, N = |f| -+ 2c/h (v = -+c)" : ""
     set title sprintf("%s: contact force, max|direct - fb\\_newton| = %.2g m/s^2%s", label, \
                       value('diff_'.scene.'_N'), chatter)
     set ylabel "N(t) [m/s^2] (log scale)"
     set logscale y
-    set yrange [1e-1:1e9]
+    set yrange [1e-1:*]  # fixed range: N below 0.1 m/s^2 (smoothing, round-off) is not what this shows
     set format y "10^{%L}"
     # Impact steps (N > 2 |f|) as impulses; resting and chatter steps (0 < N <= 2 |f|) as dots.
     impact(n) = n > 2 * abs(f) ? n : NaN
@@ -105,13 +105,14 @@ do for [format in "png pdf"] {
     set title sprintf("%s: energy, max|direct - fb\\_newton| = %.2g J/kg", label, \
                       value('diff_'.scene.'_E'))
     set ylabel "E(t) = v^2/2 - f u [J/kg]"
-    set yrange [0:55]
+    set yrange [0:*]  # fixed range: energy from 0, so that a loss reads as a share of E(0)
     plot csv(scene, 'direct') skip 1 using 1:5 with lines lw 3 lc rgb blue title "direct", \
          csv(scene, 'fb_newton') skip 1 using 1:5 with lines lw 2 dt 2 lc rgb orange \
            title "fb_newton", \
          csv(scene, 'exact') skip 1 using 1:5 with lines lw 1 lc rgb "black" title "exact"
   }
   unset multiplot
+  set rmargin
   set output
 }
 
@@ -123,29 +124,30 @@ zeno_error(name) = abs(column(name) - zeno)
 
 do for [format in "png svg"] {
   if (format eq "png") {
-    set terminal pngcairo size 1200,1200 font ",10"
+    set terminal pngcairo size 1200,1350 font ",10"
     set output 'figures/figure4_h_sweep.png'
   } else {
-    set terminal svg size 1200,1200 font ",10" dynamic
+    set terminal svg size 1200,1350 font ",10" dynamic
     set output 'figures/figure4_h_sweep.svg'
   }
   set multiplot layout 3,2 rowsfirst title \
       "Figure 4 over 121 step sizes h (f = -9.80665 m/s^2, u_0 = 5 m, v_0 = -1 m/s, T = 10 s)"
   set grid
   set logscale x
-  set xrange [1e-5:1e-2]
+  set xrange [*:*] noextend
   set xtics auto
   set format x "10^{%L}"
-  set xlabel "h [s]"
-  set key box opaque noenhanced
+  set xlabel "h [s]" offset 0, 0.4
+  set bmargin 9
+  set key below maxrows 4 nobox noenhanced title " "
   set arrow 9 from 1e-3, graph 0 to 1e-3, graph 1 nohead dt 3 lc rgb "gray50"
 
   set title "(a) no COR: energy lost, E(0) - E(T) and at the first impact (exact: 0)"
   set logscale y
-  set yrange [0.1:20000]
+  set yrange [*:*] noextend
+  set offsets 0, 0, graph 0.08, graph 0.05
   set format y "%g"
   set ylabel "energy loss [J/kg] (log scale)"
-  set key top center maxrows 3
   plot sweep using 1:(col("no_cor_direct_energy_loss")) with points pt 6 lc rgb blue \
          title "direct, E(0) - E(T)", \
        sweep using 1:(col("no_cor_fb_newton_energy_loss")) with points pt 2 lc rgb orange \
@@ -156,33 +158,40 @@ do for [format in "png svg"] {
          lc rgb purple title "fb_newton, first impact", \
        energy0 with lines lc rgb "black" dt 2 title sprintf("E(0) = %.3f", energy0)
   unset logscale y
-  set key maxrows auto
+  unset offsets
 
   set title "(b) no COR: flatness of E(t), the mean of E^l over [0, T] / E(0) (exact: 1)"
-  set yrange [0:1.1]
-  set ylabel "mean E / E(0)"
-  set key top right
+  set yrange [0:*]  # fixed range: a share of E(0), drawn from 0
+  set ylabel "mean E / E(0) [1]"
   plot sweep using 1:(col("no_cor_direct_energy_mean") / energy0) with linespoints pt 6 \
          lw 1 lc rgb blue title "direct", \
        sweep using 1:(col("no_cor_fb_newton_energy_mean") / energy0) with points pt 2 \
          lc rgb orange title "fb_newton", \
        1 with lines lc rgb "black" title "exact (elastic)"
 
+  # The 401 runs from u0 moved by up to 200 ulps at h = 1e-3 as one box: their quartiles and
+  # median, whiskers to their least and largest rest time (figure4_readings (b) is their histogram).
+  set datafile missing "nan"
+  stats ensemble using (col("no_cor_direct")) name "ULPS" nooutput
+  set datafile missing
   set title "(c) no COR: rest time (exact: never rests)"
-  set yrange [0:10.5]
+  set yrange [0:*]  # fixed range: a time from the start, drawn from 0
   set ylabel "rest time [s]"
-  set key top left
+  set style fill empty
+  set boxwidth 0.08
   plot sweep using 1:(col("no_cor_direct_rest_time")) with linespoints pt 6 lw 1 \
          lc rgb blue title "direct", \
        sweep using 1:(col("no_cor_fb_newton_rest_time")) with points pt 2 lc rgb orange \
          title "fb_newton", \
-       ensemble using (1e-3):(col("no_cor_direct")) with points pt 1 ps 0.5 lc rgb "gray40" \
-         title "direct, h = 1e-3, u0 moved by <= 200 ulps", \
+       '+' using (1e-3):(ULPS_lo_quartile):(ULPS_min):(ULPS_max):(ULPS_up_quartile):(0.15e-3) \
+         every ::0::0 with candlesticks whiskerbars lw 2 lc rgb "black" \
+         title sprintf("direct, h = 1e-3, %d runs with u0 moved by <= 200 ulps: quartiles, min, max", ULPS_records), \
+       '+' using (1e-3):(ULPS_median):(ULPS_median):(ULPS_median):(ULPS_median):(0.15e-3) \
+         every ::0::0 with candlesticks lw 2 lc rgb "black" notitle, \
        7.5 with lines lc rgb "black" dt 2 title "paper: 'comes to a stop at around t = 7.5'"
 
   set title sprintf("(d) COR = 0.75: rest time against the exact Zeno time %.4f s", zeno)
-  set yrange [6.3:7.1]
-  set key bottom right
+  set autoscale y
   plot sweep using 1:(col("cor075_direct_rest_time")) with linespoints pt 6 lw 1 \
          lc rgb blue title "direct", \
        sweep using 1:(col("cor075_fb_newton_rest_time")) with points pt 2 lc rgb orange \
@@ -192,10 +201,9 @@ do for [format in "png svg"] {
   set title sprintf("(e) COR = 0.75: rest-time error |t_{rest} - t_{inf}| (fitted order %.2f)", \
                     order_direct)
   set logscale y
-  set yrange [1e-6:1]
+  set autoscale y
   set format y "10^{%L}"
   set ylabel "|t_{rest} - t_{inf}| [s]"
-  set key bottom right
   plot sweep using 1:(zeno_error("cor075_direct_rest_time")) with points pt 6 lc rgb blue \
          title "direct", \
        sweep using 1:(zeno_error("cor075_fb_newton_rest_time")) with points pt 2 \
@@ -207,9 +215,8 @@ do for [format in "png svg"] {
   set format y "%g"
 
   set title "(f) impacts before rest"
-  set yrange [0:55]
-  set ylabel "impacts"
-  set key top left
+  set yrange [0:*]  # fixed range: counts, drawn from 0
+  set ylabel "impacts [1]"
   plot sweep using 1:(col("cor075_direct_impacts")) with linespoints pt 6 lw 1 lc rgb blue \
          title "direct, COR = 0.75", \
        sweep using 1:(col("cor075_fb_newton_impacts")) with points pt 2 lc rgb orange \
@@ -220,6 +227,7 @@ do for [format in "png svg"] {
          title "fb_newton, no COR"
   unset multiplot
   unset arrow 9
+  set bmargin
   set output
 }
 
@@ -251,10 +259,10 @@ do for [format in "png svg"] {
 
   set title sprintf("(a) u(t), direct: closed form rests at %.3f s, (5-1) as printed at %.3f s", \
                     rest_no_cor_direct, rest_no_cor_direct_paper)
-  set xrange [0:10]
-  set xlabel "t [s]"
+  set xrange [*:*] noextend
+  set xlabel "t [s]" offset 0, 0
   set ylabel "u(t) [m]"
-  set yrange [-0.3:7]
+  set autoscale y
   set arrow 1 from rest_no_cor_direct, graph 0 to rest_no_cor_direct, graph 1 nohead dt 3 \
       lc rgb blue
   set arrow 2 from rest_no_cor_direct_paper, graph 0 to rest_no_cor_direct_paper, graph 1 nohead \
@@ -268,10 +276,11 @@ do for [format in "png svg"] {
 
   set title sprintf("(b) rest times of 401 runs with u0 moved by <= 200 ulps\nat >= 7.5 s or still bouncing at T = 10 s: closed form %d, as printed %d (%d bouncing)", \
                     late_closed_form, late_paper, bouncing_paper)
-  set xrange [5:10]
+  # The rest times of both arithmetics lie in 5..10 s; a run still bouncing at T is binned at -1.
+  set xrange [5:10]  # fixed range: the rest times lie in 5..10 s, the bouncing runs binned at -1 fall outside
   set xlabel "rest time [s] (0.1 s bins)"
-  set ylabel "runs"
-  set yrange [0:*]
+  set ylabel "runs [1]"
+  set yrange [0:*]  # fixed range: counts, drawn from 0
   set style fill solid 0.8 noborder
   set boxwidth 0.045 absolute
   set arrow 3 from 7.5, graph 0 to 7.5, graph 1 nohead dt 2 lw 2 lc rgb "black"
@@ -285,8 +294,8 @@ do for [format in "png svg"] {
 
   set title sprintf("(c) energy change of the contact step, u_0 = 0.01 m, v_0 = -1 m/s, f = +9.80665 m/s^2 (fitted order of the rise %.2f)", contact_order)
   set logscale xy
-  set xrange [1e-5:1e-2]
-  set yrange [1e-7:1]
+  set xrange [*:*] noextend
+  set autoscale y
   set format x "10^{%L}"
   set format y "10^{%L}"
   set xlabel "h [s]"

@@ -22,19 +22,22 @@ scheme_dashes(i) = i == 4 ? 2 : 1
 
 do for [format in "png svg"] {
   if (format eq "png") {
-    set terminal pngcairo size 1200,900 font ",10"
+    set terminal pngcairo size 1400,900 font ",10"
     set output 'figures/lemma1.png'
   } else {
-    set terminal svg size 1200,900 font ",10" dynamic
+    set terminal svg size 1400,900 font ",10" dynamic
     set output 'figures/lemma1.svg'
   }
   set multiplot layout 2,2 title "Lemma 1: s (L E)(s) = E(0) for s > 1? (u_0 = 5 m, v_0 = -1 m/s, {/Symbol f} = 0)\nin (c) and (d) a deviation of exactly 0 is drawn on the bottom axis, at 10^{-18}"
 
   set xlabel "t [s]"
-  set ylabel "E(t) / E(0)"
-  set xrange [0:10]
-  set yrange [-0.05:1.1]
-  set key at graph 0.98, graph 0.49 right top box opaque
+  set ylabel "E(t) / E(0) [1]"
+  set xrange [*:*] noextend
+  set yrange [0:*]  # fixed range: a share of E(0), drawn from 0
+  set offsets 0, 0, graph 0.05, graph 0.05
+  # Each key right of its panel, in a margin of the same width everywhere, so the panels line up.
+  set rmargin 33
+  set key outside right top nobox font ",9"
   set grid
   set title "(a) exact solution: energy E = v^2/2 - f u"
   plot for [i=1:5] sprintf("%s/energy_%s.csv", results, word(exact_cases, i)) \
@@ -46,12 +49,11 @@ do for [format in "png svg"] {
        title word(scheme_titles, i)
 
   set xlabel "s [1/s]"
-  set ylabel "|s (L E)(s) - E(0)| / |E(0)|"
-  set xrange [1:10]
-  set yrange [1e-18:1]
+  set ylabel "|s (L E)(s) - E(0)| / |E(0)| [1]"
+  unset offsets
+  set yrange [1e-18:*]  # fixed range: a deviation of exactly 0 is drawn at 1e-18, the axis bottom
   set logscale y 10
   set format y "10^{%L}"
-  set key at graph 0.98, graph 0.72 right top box opaque
   set title "(c) exact solution on [0, inf): lines GSL quadrature, circles sum_k dE_k e^{-s t_k}"
   plot for [i=1:5] sprintf("%s/deviation.csv", results) \
          using 1:(at_least(column(word(exact_cases, i)))) with lines lw 2 dt exact_dashes(i) \
@@ -69,6 +71,7 @@ do for [format in "png svg"] {
          lc rgb word(scheme_colors, i) notitle, \
        1e-16 with lines lc rgb "black" lw 1.5 dt 2 title "round-off of E (1e-16)"
   unset multiplot
+  set rmargin
   unset logscale y
   set format y "% h"
 }

@@ -12,24 +12,27 @@ set datafile separator ','
 
 do for [format in "png svg"] {
   if (format eq "png") {
-    set terminal pngcairo size 1500,520 font ",10"
+    set terminal pngcairo size 1500,620 font ",10"
     set output 'figures/lemma5.png'
   } else {
-    set terminal svg size 1500,520 font ",10" dynamic
+    set terminal svg size 1500,620 font ",10" dynamic
     set output 'figures/lemma5.svg'
   }
   set multiplot layout 1,3 title \
       "Lemma 5: pairing of the contact force with test functions {/Symbol y}, t_* = 5"
   set grid
   set logscale x
-  set xrange [5e-7 : 0.2]
+  set xrange [*:*] noextend
   set format x "10^{%T}"
   set xlabel "{/Symbol e} [s]"
+  set offsets graph 0.03, graph 0.03, graph 0.05, graph 0.05
+  # Every key below its panel, in a bottom margin of the same height, so that the panels line up.
+  set bmargin 9
+  set key below maxrows 3 nobox title " "
 
   set title "(a) <N, {/Symbol y}> / {/Symbol y}(t_*) for N = S''/6 and S''/3"
   set ylabel "pairing / {/Symbol y}(t_*) [1]"
-  set yrange [0.35 : 1.15]
-  set key center right box opaque
+  set autoscale y
   plot 1 with lines dt 2 lw 1.5 lc rgb "black" title "Lemma 5's claimed limit 1", \
        0.5 with lines dt 3 lw 1.5 lc rgb "#808080" title "1/2", \
        for [i=1:5] file(i) skip 1 using 1:2 with linespoints pt 7 ps 0.7 lw 1.5 \
@@ -43,9 +46,8 @@ do for [format in "png svg"] {
   set title "(b) convergence to 1/2"
   set ylabel "|<N_{/Symbol e}, {/Symbol y}>/{/Symbol y}(t_*) - 1/2| [1]"
   set logscale y
-  set yrange [1e-15 : 1e-1]
+  set autoscale y
   set format y "10^{%T}"
-  set key top left box opaque
   plot for [i=1:5] file(i) skip 1 using 1:(abs($4)) with points pt 7 ps 0.9 \
          lc rgb word(colors, i) title word(titles, i), \
        for [i=1:5] file(i) skip 1 using 1:(abs($5)) with lines dt 2 lw 1.2 \
@@ -56,8 +58,7 @@ do for [format in "png svg"] {
   set ylabel "piece's pairing / {/Symbol y}(t_*) [1]"
   unset logscale y
   set format y "%g"
-  set yrange [0.15 : 0.55]
-  set key center right box opaque
+  set autoscale y
   plot 0.5 with lines dt 2 lw 1.5 lc rgb "black" title "proof's value 1/2 per piece", \
        0.25 with lines dt 3 lw 1.5 lc rgb "#808080" title "1/4", \
        for [i=1:5] file(i) skip 1 using 1:6 with linespoints pt 7 ps 0.7 lw 1.5 \
@@ -68,5 +69,7 @@ do for [format in "png svg"] {
        1/0 with linespoints pt 6 ps 0.9 lw 1.5 dt 4 lc rgb "black" title "S_2'' piece, [t_*, t_*+{/Symbol e})"
 
   unset multiplot
+  set bmargin
+  unset offsets
   set output
 }

@@ -12,6 +12,7 @@
 if (!exists("results")) results = 'results/stability'
 if (!exists("timing")) timing = 'results/figures'
 load results.'/labels.gp'
+processor = system("cat '".results."/processor.txt'")
 
 # Outcome colours (the Outcome codes of src/impact/stability.hpp).
 array outcome_colour[7] = [0x1a9641, 0xfdd835, 0xd7191c, 0x2b83ba, 0x000000, 0x9e7cc1, 0xd9d9d9]
@@ -27,7 +28,7 @@ outcome_key = "for [c = 1:7] NaN with boxes lc rgb outcome_colour[c] title outco
 h_tics = "set xtics ('10^{-9}' -9, '10^{-6}' -6, '10^{-3}' -3, '1' 0); set mxtics 3"
 # The panel in row `row`, column `col` of the 2 x 3 parameter maps. (Macros are expanded when a
 # loop is read, so they are all defined here, before it.)
-panel_at = "set lmargin at screen 0.075 + (col - 1) * 0.32; set rmargin at screen 0.32 * col; set tmargin at screen 0.92 - (row - 1) * 0.42; set bmargin at screen 0.6 - (row - 1) * 0.42"
+panel_at = "set lmargin at screen 0.075 + (col - 1) * 0.32; set rmargin at screen 0.32 * col + 0.01; set tmargin at screen 0.9 - (row - 1) * 0.43; set bmargin at screen 0.56 - (row - 1) * 0.43"
 
 do for [format in "png svg"] {
   # ---- Figure 1: the extreme cases ----
@@ -41,12 +42,14 @@ do for [format in "png svg"] {
     set output 'figures/stability_map.svg'
   }
   # The cases label the rows of the first panel only; the others share its rows.
-  set multiplot layout 1,5 margins 0.175, 0.78, 0.1, 0.86 spacing 0.012 title \
+  set multiplot layout 1,5 margins 0.175, 0.985, 0.2, 0.86 spacing 0.012 title \
       "Stability map: outcome of each run, method x case x h (T = min(T_{case}, 10^5 h); penalty: c_N = 10^6 s^{-2}, rk8pd, min(T_{case}, 2 10^4 h))\nu_0 and floor {/Symbol f} in m ({/Symbol f} = 0 unless given), v_0 in m/s, force f in m/s^2, gravity g = -9.80665 m/s^2"
-  set xrange [-9.5:0.5]
-  set yrange [18.5:-0.5]
+  set xrange [-9.5:0.5]  # fixed range: the grid of the runs, log10 h = -9 .. 0, a cell each
+  set yrange [18.5:-0.5]  # fixed range: the 19 cases, a row each
   @h_tics
   set xlabel "h [s]"
+  # no ylabel: the rows are the cases, named on the first panel
+  unset ylabel
   unset key
   methods = "direct fb_newton moreau_jean exact penalty"
   do for [m = 1:5] {
@@ -56,23 +59,32 @@ do for [format in "png svg"] {
     } else {
       set ytics 0, 1, 18 format ""
     }
-    if (m == 5) {
-      set key at screen 0.79, 0.5 left center box Left reverse noenhanced spacing 1.5 \
-          title "outcome of the run"
-    }
     plot results.'/map_cases.dat' index (m - 1) using 3:2:(0.5):(0.5):(colour($4)) \
-        with boxxyerror lc rgb variable notitle, @outcome_key
+        with boxxyerror lc rgb variable notitle
   }
+  # The outcome key, in a strip of its own along the bottom.
+  set lmargin at screen 0.175
+  set rmargin at screen 0.985
+  set tmargin at screen 0.1
+  set bmargin at screen 0.005
+  unset title
+  unset border
+  unset tics
+  unset xlabel
+  unset ylabel
+  set key center center box horizontal maxcols 4 Left reverse noenhanced width 1 \
+      title "outcome of the run"
+  plot @outcome_key
   unset multiplot
 
   # ---- Figure 2: epsilon of fb_newton, stepper and c_N of penalty ----
   reset
   set style fill solid 1.0 noborder
   if (format eq "png") {
-    set terminal pngcairo size 1800,1050 font ",10"
+    set terminal pngcairo size 1800,950 font ",10"
     set output 'figures/stability_params.png'
   } else {
-    set terminal svg size 1800,1050 font ",10" dynamic
+    set terminal svg size 1800,950 font ",10" dynamic
     set output 'figures/stability_params.svg'
   }
   # Top row: the smoothing of fb_newton, then the steppers of penalty on a bounce; bottom row:
@@ -82,11 +94,11 @@ do for [format in "png svg"] {
       "Stability map: the smoothing parameter {/Symbol e} of fb\\_newton and the normal compliance c_N of penalty"
   unset key
   row = 1; col = 1; @panel_at
-  set xrange [-9.5:0.5]
+  set xrange [-9.5:0.5]  # fixed range: the grid of the runs, log10 h = -9 .. 0, a cell each
   @h_tics
   set xlabel "h [s]"
-  set ylabel "{/Symbol e}"
-  set yrange [-15.5:-1.5]
+  set ylabel "{/Symbol e} [1]"
+  set yrange [-15.5:-1.5]  # fixed range: the grid of the runs, log10 epsilon = -15 .. -2
   set ytics ('10^{-15}' -15, '10^{-12}' -12, '10^{-9}' -9, '10^{-6}' -6, '10^{-3}' -3)
   set mytics 3
   set title "(a) fb\\_newton: bounce from u_0 = 1 m, COR = 1"
@@ -97,12 +109,13 @@ do for [format in "png svg"] {
   plot results.'/map_eps.dat' index 1 using 3:2:(0.5):(0.5):(colour($4)) \
       with boxxyerror lc rgb variable notitle
 
-  set xrange [1.5:12.5]
+  set xrange [1.5:12.5]  # fixed range: the grid of the runs, log10 c_N = 2 .. 12
   set xtics ('10^2' 2, '10^4' 4, '10^6' 6, '10^8' 8, '10^{10}' 10, '10^{12}' 12)
   set mxtics 2
   set xlabel "c_N [s^{-2}]"
+  # no ylabel: the rows are the GSL steppers, named on the axis
   unset ylabel
-  set yrange [-0.5:6.5]
+  set yrange [-0.5:6.5]  # fixed range: the seven GSL steppers, a row each
   @set_stepper_tics
   set ytics noenhanced
   set mytics 1
@@ -115,11 +128,11 @@ do for [format in "png svg"] {
   plot results.'/map_stiff.dat' index 1 using 3:2:(0.5):(0.5):(colour($4)) \
       with boxxyerror lc rgb variable notitle
 
-  set xrange [-6.5:-0.5]
+  set xrange [-6.5:-0.5]  # fixed range: the grid of the runs, log10 h = -6 .. -1
   set xtics ('10^{-6}' -6, '10^{-5}' -5, '10^{-4}' -4, '10^{-3}' -3, '10^{-2}' -2, '10^{-1}' -1)
   set mxtics 1
   set xlabel "h [s]"
-  set yrange [1.5:12.5]
+  set yrange [1.5:12.5]  # fixed range: the grid of the runs, log10 c_N = 2 .. 12
   set ytics ('10^2' 2, '10^4' 4, '10^6' 6, '10^8' 8, '10^{10}' 10, '10^{12}' 12) enhanced
   set mytics 2
   set ylabel "c_N [s^{-2}]"
@@ -133,8 +146,8 @@ do for [format in "png svg"] {
   # The outcome key, in a strip of its own along the bottom.
   set lmargin at screen 0.02
   set rmargin at screen 0.98
-  set tmargin at screen 0.1
-  set bmargin at screen 0.02
+  set tmargin at screen 0.065
+  set bmargin at screen 0.005
   unset title
   unset border
   unset tics
@@ -161,15 +174,17 @@ do for [format in "png svg"] {
   pick(st, scene, value) = (strcol(1) eq st && strcol(4) eq scene) ? value : NaN
   set multiplot layout 2,4 title \
       "Normal compliance N = c_N max({/Symbol f} - u, 0) as c_N grows: the Signorini limit (as in Lemma 5) and the cost per GSL stepper"
-  set xrange [50:2e12]
+  set xrange [*:*] noextend
+  set offsets graph 0.03, graph 0.03, graph 0.05, graph 0.05
   set logscale xy
   set format x "10^{%L}"
   set format y "10^{%L}"
   set xlabel "c_N [s^{-2}]"
   set grid
   # The colours of the steppers are in the key of the last panel; the key of each panel has only its
-  # reference lines, in a corner the data leave empty.
-  set key top right box opaque
+  # reference lines, below the panel, in a bottom margin every panel keeps.
+  set bmargin 6
+  set key below nobox title " "
   V = sqrt(2 * 9.80665)
 
   set title "(a) first contact at V = 4.43 m/s: penetration (all steppers agree)"
@@ -203,25 +218,20 @@ do for [format in "png svg"] {
        30 / sqrt(x) with lines dt 2 lc rgb "gray40" title "slope -1/2"
 
   set title "(e) bounce: energy drift v^2/2 - f u + c_N max({/Symbol f} - u, 0)^2/2"
-  unset key
   set ylabel "max_l |E^l - E^0| [m^2/s^2]"
   plot for [i = 1:7] stiff using 3:(pick(word(steppers, i), "bounce", finished($15) ? $5 : NaN)) \
            with linespoints pt 7 ps 0.8 lc rgb stepper_colour[i] notitle
 
   set title "(f) ODE steps: bounce (T = 2 s, dashed) and resting contact (T = 0.1 s, solid)"
-  set ylabel "ODE steps accepted"
-  set yrange [50:3e5]
-  set key top left box opaque
+  set ylabel "ODE steps accepted [1]"
   plot for [i = 1:7] stiff using 3:(pick(word(steppers, i), "bounce", finished($15) ? $21 : NaN)) \
            with linespoints dt 2 pt 6 ps 0.8 lc rgb stepper_colour[i] notitle, \
        for [i = 1:7] stiff using 3:(pick(word(steppers, i), "rest", finished($15) ? $21 : NaN)) \
            with linespoints pt 7 ps 0.8 lc rgb stepper_colour[i] notitle, \
        1e5 with lines dt 3 lw 1.5 lc rgb "black" title "budget (10^5 steps)"
-  set autoscale y
 
   set title "(g) resting contact: penetration max({/Symbol f} - u) against 2 |f| / c_N"
   set ylabel "max({/Symbol f} - u) [m]"
-  set key top right
   plot for [i = 1:7] stiff using 3:(pick(word(steppers, i), "rest", finished($15) ? -$16 : NaN)) \
            with points pt 7 ps 0.8 lc rgb stepper_colour[i] notitle, \
        2 * 9.80665 / x with lines dt 2 lc rgb "black" title "2 |f| / c_N"
@@ -242,7 +252,7 @@ do for [format in "png svg"] {
            title word(steppers, i).(i >= 5 ? " (implicit)" : " (explicit)")
   unset multiplot
 
-  # ---- Figure 4: what the stiff runs cost in time on this machine ----
+  # ---- Figure 4: what the stiff runs cost in time on the processor that ran them ----
   if (format eq "png") {
     set terminal pngcairo size 1300,500 font ",10"
     set output timing.'/stability_stiff_time.png'
@@ -251,11 +261,13 @@ do for [format in "png svg"] {
     set output timing.'/stability_stiff_time.svg'
   }
   set multiplot layout 1,2 margins 0.07, 0.85, 0.12, 0.86 spacing 0.08 title \
-      "Normal compliance, resting contact (T = 0.1 s, h = 10^{-3} s): wall time per GSL stepper on this machine"
+      "Normal compliance, resting contact (T = 0.1 s, h = 10^{-3} s): wall time per GSL stepper\non one core of an ".processor
   set border
   set tics
   set grid
-  set xrange [50:2e12]
+  set bmargin
+  unset offsets
+  set xrange [*:*] noextend
   set autoscale y
   set logscale xy
   set xlabel "c_N [s^{-2}]"
@@ -266,8 +278,8 @@ do for [format in "png svg"] {
            with linespoints pt 7 ps 0.8 lc rgb stepper_colour[i] title word(steppers, i)
   set title "(b) time per accepted ODE step"
   set ylabel "wall time / ODE steps [s]"
-  set key at screen 0.86, 0.5 left center nobox noenhanced spacing 1.4 title "GSL stepper" \
-      left reverse Left
+  set key at screen 0.86, 0.5 left center vertical maxcols auto maxrows auto nobox noenhanced \
+      spacing 1.4 title "GSL stepper" left reverse Left
   plot for [i = 1:7] stiff using 3:(pick(word(steppers, i), "rest", finished($15) ? $25 / $21 : NaN)) \
            with linespoints pt 7 ps 0.8 lc rgb stepper_colour[i] title word(steppers, i)
   unset multiplot

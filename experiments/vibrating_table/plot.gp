@@ -45,15 +45,16 @@ do for [format in "png pdf"] {
   }
   set multiplot layout 2,1 title "Ball on a vibrating table (exact solution): impact phase after a transient of 40 table periods, 20 periods kept per {/Symbol G}"
   set grid
-  set xrange [0.2:2.6]
-  set yrange [0:2 * pi]
+  set xrange [0.2:2.6]  # fixed range: the sweeps' range of Gamma (no impact below Gamma_1 is part of it)
+  set yrange [0:2 * pi]  # fixed range: a phase mod 2 pi, drawn whole
   set ytics ("0" 0, "{/Symbol p}/2" pi / 2, "{/Symbol p}" pi, "3{/Symbol p}/2" 3 * pi / 2, "2{/Symbol p}" 2 * pi)
-  set xlabel "{/Symbol G} = a {/Symbol w}^2 / g"
+  set xlabel "{/Symbol G} = a {/Symbol w}^2 / g [1]"
   set ylabel "impact phase {/Symbol w}t mod 2{/Symbol p} [rad]"
-  set key outside right top box opaque
+  # One key for both panels, below the second: both draw the same series.
   set samples 1000
   do for [e in "0.5 0.8"] {
     ee = e + 0
+    if (e eq "0.5") { set key off; set bmargin } else { set key below maxrows 4 nobox title " "; set bmargin 9 }
     eval thresholds_marks(ee)
     # Runs of exact that stopped with a numerical failure (regimes.csv), marked at the bottom.
     stats regimes skip 1 using (is(1, "exact") && abs($3 - ee) < 1e-9 && is(6, "failed") ? 1 : 0) nooutput
@@ -74,22 +75,25 @@ do for [format in "png pdf"] {
   }
   unset multiplot
   unset arrow
+  set bmargin
 
   if (format eq "png") {
-    set terminal pngcairo size 1300,1000 font ",10"
+    set terminal pngcairo size 1300,1050 font ",10"
     set output 'figures/vibrating_table_steppers.png'
   } else {
-    set terminal pdfcairo size 8.7in,6.7in font ",7"
+    set terminal pdfcairo size 8.7in,7in font ",7"
     set output 'figures/vibrating_table_steppers.pdf'
   }
   # The thresholds are named in the title: four more key entries would cover the branches.
-  set multiplot layout 2,2 title "Time-steppers on the vibrating table: impact phases of both sweeps (impacts as impact run --events dates them: where the step's flight crosses the table) over the exact ones\nvertical lines: {/Symbol G}_1 dashed and {/Symbol G}_{pd} dotted (black n = 1, pink n = 2), {/Symbol G} = 1 gray, as in vibrating\\_table.png"
-  set key inside left top box opaque font ",8"
+  set multiplot layout 2,2 title "Time-steppers on the vibrating table: impact phases of both sweeps (impacts as impact run --events dates them: where the step's flight crosses the table) over the exact ones\nvertical lines: {/Symbol G}_1 dashed and {/Symbol G}_{pd} dotted (black n = 1, pink n = 2), {/Symbol G} = 1 gray, as in the exact solution's diagram"
+  # One key for the four panels, along the bottom of the figure, in a margin every panel keeps.
+  set bmargin 5
   do for [e in "0.5 0.8"] {
     ee = e + 0
     do for [method in "direct moreau_jean"] {
       eval thresholds_marks(ee)
       set title sprintf("%s, e = %s", method, e) noenhanced
+      if (e eq "0.5" && method eq "direct") { set key at screen 0.5, screen 0.005 center bottom horizontal nobox } else { set key off }
       plot diagram skip 1 using (pick("exact", ee, "up", "impact")):7 with points pt 7 ps 0.3 lc rgb gray title "exact", \
            diagram skip 1 using (pick("exact", ee, "down", "impact")):7 with points pt 7 ps 0.3 lc rgb gray notitle, \
            steppers skip 1 using (pick_h(method, 1e-3, ee, "impact")):7 with points pt 7 ps 0.15 lc rgb orange title "h = 10^{-3} s", \
@@ -99,6 +103,7 @@ do for [format in "png pdf"] {
   }
   unset multiplot
   unset arrow
+  set bmargin
 }
 
 # Thresholds against h: measured - closed form. Rows of thresholds.csv: method,h,e,existence,
@@ -114,23 +119,23 @@ do for [format in "png pdf"] {
   }
   set multiplot layout 2,2 title "Thresholds of the period-1 orbit as each method shows them (continuation sweeps in steps of 0.005, ends of the period-1 branch bisected)"
   set grid
-  unset yrange
-  set xrange [5e-5:5e-3]
+  set autoscale y
+  set xrange [*:*] noextend
   set logscale x
   set format x "10^{%L}"
   set xlabel "h [s]"
-  set key bottom right box opaque noenhanced
-  # Room below the data for the key, which would hide a point there.
-  set offsets 0, 0, 0, graph 0.3
+  set bmargin 7
+  set key below maxrows 3 nobox noenhanced title " "
+  set offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05
   set ytics auto
   do for [e in "0.5 0.8"] {
     ee = e + 0
-    set ylabel "{/Symbol G}(split = 0.1) - exact's"
+    set ylabel "{/Symbol G}(split = 0.1) - exact's [1]"
     set title sprintf("period-2 branch: {/Symbol G} where its split reaches 0.1 g/{/Symbol w}, e = %s", e) enhanced
     plot thresholds skip 1 using 2:(is(1, "direct") && abs($3 - ee) < 1e-9 ? $8 : NaN) with linespoints pt 7 lc rgb blue title "direct", \
          thresholds skip 1 using 2:(is(1, "moreau_jean") && abs($3 - ee) < 1e-9 ? $8 : NaN) with linespoints pt 5 lc rgb orange title "moreau_jean", \
          0 with lines lc rgb gray notitle
-    set ylabel "{/Symbol G}_1(h) - {/Symbol G}_1"
+    set ylabel "{/Symbol G}_1(h) - {/Symbol G}_1 [1]"
     set title sprintf("end of the period-1 branch, e = %s: {/Symbol G}_1 = %.6f", e, g1(ee, 1)) enhanced
     plot thresholds skip 1 using 2:(shift("direct", ee, 4, g1(ee, 1))) with linespoints pt 7 lc rgb blue title "direct", \
          thresholds skip 1 using 2:(shift("moreau_jean", ee, 4, g1(ee, 1))) with linespoints pt 5 lc rgb orange title "moreau_jean", \
@@ -139,6 +144,7 @@ do for [format in "png pdf"] {
   }
   unset multiplot
   unset offsets
+  set bmargin
   unset logscale x
   set format x "% h"
 }
@@ -159,7 +165,7 @@ do for [format in "png pdf"] {
   set autoscale x
   set xlabel "t [s] (from a state on the attractor)"
   set ylabel "u = x - y [mm]"
-  set yrange [0:*]
+  set yrange [0:*]  # fixed range: a height above the table, drawn from 0
   unset key
   names = "period_one period_two chaos sticking"
   gammas = "1.3 1.6 1.75 1.03"

@@ -96,7 +96,7 @@ panel_at = "pw = (gx1 - gx0 - (ncol - 1) * gapx) / ncol; ph = (gy1 - gy0 - (nrow
 key_strip = "set lmargin at screen gx1 + 0.005; set rmargin at screen 0.995; set tmargin at screen gy1; \
   set bmargin at screen gy0; unset title; unset border; unset tics; unset xlabel; unset ylabel; \
   unset logscale; unset grid; set xrange [0:1]; set yrange [0:1]; \
-  set key center center nobox noopaque Left reverse enhanced spacing 1.3 font key_font title key_title; \
+  set key inside center center nobox noopaque Left reverse enhanced spacing 1.3 font key_font title key_title; \
   plot for [c in key_curves] NaN with linespoints lc rgb col(c) dt dash(c) pt point(c) ps psize(c) lw 1.5 title tit(c); \
   set border; set tics; set grid; unset key"
 
@@ -107,9 +107,11 @@ do for [scene in constant_scenes] {
     if (strstrt(" ".all_curves." ", " ".c." ") == 0) { all_curves = all_curves." ".c }
   }
 }
-penalty_note = "method\n(penalty: on the grid h = 10^{-3} s;\nagainst CPU time one point,\nat its tightest tolerance 10^{-11})\n"
-# The same for the figures whose tolerance sweeps include event_driven's and LSODAR's.
-tolerance_note = "method\n(penalty, event\\_driven, LSODAR:\non the grid h = 10^{-3} s;\nagainst CPU time one point,\nat the tightest tolerance 10^{-11})\n"
+# The key's title names the tolerance sweeps the figure draws, and only those.
+sweeps_in(curves) = (strstrt(curves, "penalty") ? ", penalty" : "") . \
+  (strstrt(curves, "event_driven") ? ", event\\_driven" : "") . (strstrt(curves, "lsodar") ? ", LSODAR" : "")
+tolerance_note(curves) = strlen(sweeps_in(curves)) == 0 ? "method" : \
+  "method\n(".sweeps_in(curves)[3:].":\non the grid h = 10^{-3} s;\nagainst CPU time one point,\nat the tightest tolerance 10^{-11})\n"
 zero_note = "an error below 10^{-16} (exact, or rounding) is drawn on the bottom axis, at < 10^{-16}"
 
 key_font = ",10"
@@ -151,15 +153,17 @@ do for [format in "png svg"] {
   set ylabel "|E^n - E(T)| [m^2/s^2]"
   unset logscale y
   set format y "%g"
+  # fixed range: the loss 2 theta (1 - theta) v^2 is at most v^2/2 = 0.5; the band above holds the key
   set yrange [0:0.7]
   set ytics autofreq
-  set key top left Left reverse font ",9" box opaque
+  # key inside: the band above 0.5, which no loss reaches (see the range)
+  set key inside top left Left reverse font ",9" box opaque
   plot results.'/mechanism.csv' skip 1 using 1:4 with points pt 6 ps 2 lc rgb "#999999" \
            title "predicted 2{/Symbol q}(1-{/Symbol q})v^2, {/Symbol q} = frac({/Symbol p}/h)", \
        '' skip 1 using 1:5 with points pt 7 ps 0.9 lc rgb "#0072B2" title "measured"
   unset key
   set format y "10^{%L}"
-  key_curves = all_curves; key_title = penalty_note
+  key_curves = all_curves; key_title = tolerance_note(key_curves)
   @key_strip
   unset multiplot
 
@@ -194,13 +198,14 @@ do for [format in "png svg"] {
   @panel_at
   set title sprintf("(d) chaotic scene: two exact runs 10^{-10} apart in v_0,\n{/Symbol l} = %.2f /s, Lyapunov time 1/{/Symbol l} = %.2f s > T = %g s", lyapunov_lambda, 1 / lyapunov_lambda, lyapunov_T)
   set xlabel "t [s]"
-  set ylabel "distance in the phase plane sqrt({/Symbol D}u^2 + {/Symbol D}v^2)"
+  set ylabel "distance in the phase plane sqrt({/Symbol D}u^2 + {/Symbol D}v^2) [m, m/s]"
   unset logscale x
   set format x "%g"
   set logscale y
   set autoscale xy
   set ytics autofreq
-  set key top left Left reverse font ",9" box opaque title ""
+  # key inside: the distance grows to the right, so the bottom right is empty, clear of the lines
+  set key inside bottom right Left reverse font ",9" box opaque title ""
   set arrow 1 from lyapunov_T, graph 0 to lyapunov_T, graph 1 nohead dt 2 lc rgb "#D55E00"
   set arrow 2 from 1 / lyapunov_lambda, graph 0 to 1 / lyapunov_lambda, graph 1 nohead dt 3 lc rgb "#000000"
   plot results.'/lyapunov.csv' skip 1 using 1:($2 > 0 ? $2 : NaN) with lines lw 1 lc rgb "#999999" title "distance", \
@@ -217,7 +222,7 @@ do for [format in "png svg"] {
       if (strstrt(" ".key_curves." ", " ".c." ") == 0) { key_curves = key_curves." ".c }
     }
   }
-  key_title = tolerance_note
+  key_title = tolerance_note(key_curves)
   @key_strip
   unset multiplot
   }
@@ -237,7 +242,7 @@ do for [format in "png svg"] {
   set grid
   set xlabel "CPU time of the solve [s]"
   set ylabel mlabel("sup_u")
-  set key bottom left box opaque font ",9"
+  set bmargin 6
   mode = 1; mc = mcol("sup_u")
   located_scenes = "figure3_no_cor figure3_cor075 figure4_cor075 table_period1"
   panel = 0
@@ -245,7 +250,7 @@ do for [format in "png svg"] {
     panel = panel + 1
     set title sprintf("(%c) %s", 96 + panel, value('title_'.scene))
     @y_range
-    set key top right box opaque Left reverse font ",9" title ""
+    set key below horizontal nobox Left reverse font ",9" title " "
     if (exists('exact_seconds_'.scene)) { set arrow 1 from value('exact_seconds_'.scene), graph 0 to value('exact_seconds_'.scene), graph 1 nohead dt 2 lw 2 lc rgb "#000000" }
     plot for [c in "direct_located direct moreau_jean"] file(scene, c) skip 1 using 3:(yvalue(c, column(mc))) \
            with linespoints lc rgb col(c) dt dash(c) pt point(c) ps psize(c) lw 1.5 title tit(c)
@@ -253,6 +258,7 @@ do for [format in "png svg"] {
   }
   unset multiplot
   unset key
+  set bmargin
 
   # --- one figure per scene: every measure against CPU time, against h, against the tolerance ---
   do for [scene in scenes] {
@@ -278,7 +284,7 @@ do for [format in "png svg"] {
     panel = 0
     do for [mode = 1:nrow] {
       set xlabel mode == 1 ? "CPU time of the solve [s]" : mode == 2 ? "step h [s]" : \
-          "tolerance rtol = atol"
+          "tolerance rtol = atol [1]"
       # The tolerances span 8 decades: a label every second one.
       if (mode == 3) { set xtics 100 } else { set xtics autofreq }
       against = mode == 1 ? "CPU time" : mode == 2 ? "the step h" : "the tolerance"
@@ -295,9 +301,7 @@ do for [format in "png svg"] {
       }
     }
     key_curves = value('curves_'.scene)
-    key_title = !has_penalty ? "method" : strstrt(key_curves, "penalty") && \
-                strstrt(key_curves, "_driven") + strstrt(key_curves, "lsodar") == 0 ? penalty_note : \
-                tolerance_note
+    key_title = tolerance_note(key_curves)
     @key_strip
     unset multiplot
   }

@@ -15,6 +15,7 @@
 
 #include "analysis/fit.hpp"
 #include "impact/error_norms.hpp"
+#include "impact/event_log.hpp"
 #include "impact/model.hpp"
 #include "impact/run.hpp"
 #include "impact/scene.hpp"
@@ -76,7 +77,17 @@ WorkPrecisionPoint measure_point(Make&& make, const Model& model, const State& i
   p.steps = grid.steps;
   auto stepper = make();
   ErrorObserver observer(model, initial, grid);  // measure_errors(), with the reference's time
+  // A method that dates its own impacts (event_driven) is measured by its first impact event, not
+  // by the floor crossing estimated from its grid states, which is the grid's error, not its own.
+  std::optional<double> own_first_impact;
+  const EventSink first_impact = [&own_first_impact](const Event& e) {
+    if (e.kind == EventKind::impact && !own_first_impact) own_first_impact = e.t;
+  };
+  if constexpr (requires { attach_event_sink(stepper, first_impact); })
+    attach_event_sink(stepper, first_impact);
   p.errors = observer.result(simulate(stepper, initial, grid, observer));
+  if (const auto t1 = observer.reference_first_impact(); own_first_impact && t1)
+    p.errors.first_impact = *own_first_impact - *t1;
   p.reference_seconds = observer.reference_seconds();
   if (rule) p.cost = time_solve(make, initial, grid, *rule);
   return p;

@@ -152,6 +152,8 @@ class ErrorObserver {
   }
   // The method's state at the last step seen.
   const State& final_state() const { return previous_; }
+  // The reference's first impact time (known once the samples have passed it).
+  std::optional<double> reference_first_impact() const { return exact_.first_impact(); }
   // The time spent evaluating the reference so far (wall clock, seconds).
   double reference_seconds() const { return reference_seconds_; }
 

@@ -146,4 +146,46 @@ double no_cor_lower_bound(double V, double theta, double t_star, double t) {
   return 2 * std::fmin(theta, 1 - theta) * V * (t - t_star);
 }
 
+namespace {
+
+// The largest |du + dv s + A (sin(phase + omega s) - sin(phase))| over s in [0, span]: at the ends
+// or where its derivative dv + A omega cos(phase + omega s) vanishes.
+double flight_error_max(double du, double dv, double A, double omega, double phase, double span) {
+  const auto error = [&](double s) {
+    return du + dv * s + A * (std::sin(phase + omega * s) - std::sin(phase));
+  };
+  double largest = std::fmax(std::fabs(error(0)), std::fabs(error(span)));
+  const double c = -dv / (A * omega);
+  if (std::fabs(c) > 1) return largest;
+  const double root = std::acos(c), period = 2 * std::numbers::pi;
+  for (double base : {root, -root}) {
+    // Every angle base + 2 pi k in [phase, phase + omega span].
+    const double first = base + period * std::ceil((phase - base) / period);
+    for (double angle = first; angle <= phase + omega * span; angle += period)
+      largest = std::fmax(largest, std::fabs(error((angle - phase) / omega)));
+  }
+  return largest;
+}
+
+}  // namespace
+
+double located_period1_constant(double g, double a, double omega, double e, double T) {
+  const double period = 2 * std::numbers::pi / omega;
+  const double psi = std::acos(std::numbers::pi * (1 - e) / (a / g * (1 + e)));
+  const double v_in = g * period / (1 + e), f_star = -g + a * std::sin(psi), A = a / 12;
+  // The first flight starts at t = 0 on the orbit, anchored there with no error.
+  double t = psi / omega, du = 0, dv = 0;
+  double largest = flight_error_max(du, dv, A, omega, 0, t);
+  double du_end = A * std::sin(psi), dv_end = 0;
+  for (; t < T; t += period) {
+    du = -e * du_end;
+    dv = -e * dv_end - (1 + e) * f_star * du_end / v_in;
+    const double span = std::fmin(period, T - t);
+    largest = std::fmax(largest, flight_error_max(du, dv, A, omega, psi, span));
+    du_end = du + dv * period;  // sin(psi + 2 pi) - sin(psi) = 0
+    dv_end = dv;
+  }
+  return largest;
+}
+
 }  // namespace impact::error_analysis

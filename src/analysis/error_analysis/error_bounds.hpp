@@ -100,4 +100,18 @@ double moreau_jean_sup_conjecture(const ZenoData& d);
 // 2 min(theta, 1 - theta) V (t - t*) below the elastic solution at every grid time t >= t_{l+2}.
 double no_cor_lower_bound(double V, double theta, double t_star, double t);
 
+// ---- Beyond order one: direct_located ----
+
+// Conjecture L.3's leading term on the period-1 orbit of the vibrating table, f(t) = -g +
+// a sin(omega t) with the COR e, from the orbit's state at t = 0 (work_precision's
+// table_period1.toml): direct_located's sup error on the grid of [0, T] is C h^2 + O(h^3), and this
+// returns C. In each flight from the anchor at t_a the scheme misses the exact flight from the
+// anchor's state by (a h^2 / 12)(sin(omega t) - sin(omega t_a)) (Lemma 1.2's leading term); the
+// located step carries the state's error (du, dv) through the impact at the speed V_in and the
+// force f_* there to (-e du, -e dv - (1 + e) f_* du / V_in) (Newton's law at a landing du / V_in
+// late), and the anchor after it is the impact to O(h). The orbit: impacts where cos(omega t) =
+// pi (1 - e) / (Gamma (1 + e)), Gamma = a / g (vibrating_table.md (T-6)), at V_in = g (2 pi /
+// omega) / (1 + e). C is the largest |error| / h^2 over the flights, each maximum in closed form.
+double located_period1_constant(double g, double a, double omega, double e, double T);
+
 }  // namespace impact::error_analysis

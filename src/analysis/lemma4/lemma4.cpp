@@ -56,6 +56,27 @@ std::string paths_csv(const PathRun& run) {
   return csv.str();
 }
 
+// A distance's fit, its coincident points, its largest value and its largest value over h.
+void insert_distance_summary(toml::table& out, const std::string& key, const std::vector<double>& h,
+                             const PathDistance& d) {
+  double bound = 0, largest = 0;
+  for (std::size_t i = 0; i < h.size(); ++i) {
+    bound = std::fmax(bound, d.sup[i] / h[i]);
+    largest = std::fmax(largest, d.sup[i]);
+  }
+  out.insert(key + "_fit", order_fit_table(d.fit));
+  out.insert(key + "_coincident", static_cast<std::int64_t>(d.coincident));
+  out.insert(key + "_max", largest);
+  out.insert(key + "_over_h_max", bound);
+}
+
+// The same with the distances themselves.
+void insert_distance(toml::table& out, const std::string& key, const std::vector<double>& h,
+                     const PathDistance& d) {
+  out.insert(key, toml_array(d.sup));
+  insert_distance_summary(out, key, h, d);
+}
+
 toml::table paths_table(const PathRun& run) {
   toml::table out{{"h", toml_array(run.h)},
                   {"direct_mj", toml_array(run.direct_mj.sup)},
@@ -63,18 +84,17 @@ toml::table paths_table(const PathRun& run) {
                   {"mj_exact", toml_array(run.mj_exact.sup)}};
   for (const auto& [key, d] :
        {std::pair{"direct_mj", &run.direct_mj}, std::pair{"direct_exact", &run.direct_exact},
-        std::pair{"mj_exact", &run.mj_exact}}) {
-    double bound = 0, largest = 0;
-    for (std::size_t i = 0; i < run.h.size(); ++i) {
-      bound = std::fmax(bound, d->sup[i] / run.h[i]);
-      largest = std::fmax(largest, d->sup[i]);
-    }
-    out.insert(std::string(key) + "_fit", order_fit_table(d->fit));
-    out.insert(std::string(key) + "_coincident", static_cast<std::int64_t>(d->coincident));
-    out.insert(std::string(key) + "_max", largest);
-    out.insert(std::string(key) + "_over_h_max", bound);
-  }
+        std::pair{"mj_exact", &run.mj_exact}})
+    insert_distance_summary(out, key, run.h, *d);
   return out;
+}
+
+std::string as_printed_csv(const std::vector<double>& h, const PathDistance& d) {
+  std::ostringstream csv;
+  csv << "h,direct_paper_exact\n";
+  for (std::size_t i = 0; i < h.size(); ++i)
+    csv << round_trip(h[i]) << ',' << round_trip(d.sup[i]) << '\n';
+  return csv.str();
 }
 
 std::string perturbation_csv(const PerturbationRun& run) {
@@ -208,6 +228,16 @@ PathRun run_paths(const PathScene& scene) {
                  path_distance(scene.h, std::move(de)), path_distance(scene.h, std::move(me))};
 }
 
+PathDistance run_paths_as_printed(const PathScene& scene) {
+  std::vector<double> sup;
+  for (double h : scene.h) {
+    const Scene printed = make_scene(scene.model, scene.initial, kT, h,
+                                     DirectParams{.free_flight = FreeFlightForm::paper});
+    sup.push_back(sup_distance(printed, ExactParams{}));
+  }
+  return path_distance(scene.h, std::move(sup));
+}
+
 PerturbationRun run_perturbation() {
   const State base{5.0, -1.0};
   const ExactSolution f0(Model{.cor = 1.0}, base);
@@ -252,7 +282,13 @@ toml::table run_lemma4(const ExperimentContext& context, const Lemma4Options& op
   for (const PathScene& scene : path_scenes(options)) {
     const PathRun run = run_paths(scene);
     context.write("paths_" + scene.name + ".csv", [&] { return paths_csv(run); });
-    paths.insert(scene.name, paths_table(run));
+    toml::table table = paths_table(run);
+    if (scene.name == "f0") {
+      const PathDistance printed = run_paths_as_printed(scene);
+      context.write("paths_f0_as_printed.csv", [&] { return as_printed_csv(run.h, printed); });
+      insert_distance(table, "direct_paper_exact", run.h, printed);
+    }
+    paths.insert(scene.name, std::move(table));
   }
   const PerturbationRun perturbation = run_perturbation();
   context.write("perturbation.csv", [&] { return perturbation_csv(perturbation); });

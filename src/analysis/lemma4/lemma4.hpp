@@ -12,6 +12,7 @@
 // run_lemma4 writes to the results directory:
 //   paths_<scene>.csv   h, sup |direct - moreau_jean|, sup |direct - exact|,
 //                       sup |moreau_jean - exact| (scenes f0, f0_cor_1, gravity)
+//   paths_f0_as_printed.csv  h, sup |direct with (5-1) as printed - exact| on f0
 //   perturbation.csv    delta, sup |u_delta - u| for u0 + delta and v0 + delta, f = 0 and
 //                       f = -9.80665 (exact, COR = 1)
 //   pair_<name>.csv     t, u, w, u_t, w_t and the terms of (4-12) (pairs cor, elastic, condition1)
@@ -71,6 +72,14 @@ struct PathRun {
   PathDistance direct_mj, direct_exact, mj_exact;
 };
 PathRun run_paths(const PathScene& scene);
+
+// direct with (5-1) evaluated step by step as printed (FreeFlightForm::paper) against the exact
+// solution, on the f0 scene: the same discrete solution as direct's closed form in exact
+// arithmetic, but each step's rounding moves u, and (4-2) passes it into v times 2 / h, so the
+// impact that h = 5/m puts on the grid lands off it by rounding, and without COR the rebound loses
+// 2 theta of its speed (Lemma 2.2): the first order of C26's grid-aligned case holds only for the
+// closed form from the last contact.
+PathDistance run_paths_as_printed(const PathScene& scene);
 
 // Part 1: exact solutions (COR = 1) from u0 + delta or v0 + delta against the one from
 // u0 = 5, v0 = -1, for delta = 1e-1 .. 1e-8: f0_u0, f0_v0 (f = 0), g_u0, g_v0 (gravity).

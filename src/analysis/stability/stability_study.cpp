@@ -6,6 +6,7 @@
 #include "analysis/stability/stability_smoothing.hpp"
 #include "analysis/stability/stability_stiffness.hpp"
 #include "analysis/stability/stability_table.hpp"
+#include "impact/processor.hpp"
 
 namespace impact::stability {
 namespace {
@@ -155,6 +156,8 @@ toml::table run_stability(const ExperimentContext& context, const StabilityStudy
   if (options.smoothing_map) add_smoothing(context, summary);
   add_stiffness(context, options, summary);
   context.write("labels.gp", gnuplot_labels);
+  // The stiff runs' wall times are this processor's: their figure names it.
+  context.write_text("processor.txt", this_processor().describe() + "\n");
   return summary;
 }
 
