@@ -68,6 +68,7 @@ help:
 	@echo "make determinism  check that an -O0 build writes the same bytes as $(BUILD)/"
 	@echo "make odr-check    link the library with -flto into one shared object: fails on an ODR violation"
 	@echo "make examples     install to a temporary prefix, build examples/ against it and run them"
+	@echo "make docs         the API reference of the installed headers (Doxygen; installs it): $(BUILD)/docs/html"
 
 all:
 	@start=$$(date +%s%N); $(MAKE) tools && $(MAKE) experiments && \
@@ -93,7 +94,7 @@ tools: configure
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
-# The Python module alone (README.md, "Using impact from Python"), and how to import it.
+# The Python module alone (docs/python.md), and how to import it.
 .PHONY: python
 python: configure
 	@cmake --build $(BUILD) -j $(JOBS) --target impact_python
@@ -162,6 +163,14 @@ clean:
 examples: configure
 	@cmake --build $(BUILD) -j $(JOBS) --target impact_core impact_cli
 	@JOBS=$(JOBS) bash examples/check_installed.sh $(BUILD)
+
+# The API reference (docs/library.md): Doxygen over the installed headers, failing on any warning.
+# doxygen is installed for this target only, before the configure that finds it.
+.PHONY: docs
+docs:
+	@IMPACT_EXTRA_PACKAGES=doxygen bash .ci/deps.sh
+	@$(MAKE) configure
+	@cmake --build $(BUILD) --target impact_docs
 
 # Hardening (tests/README.md): the test suite under AddressSanitizer and UBSan, the libFuzzer
 # target of the scene reader and --set (tests/fuzz; clang is installed for it only), and

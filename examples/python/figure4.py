@@ -1,11 +1,14 @@
-"""Figure 4 of the paper from Python: u against t for f = -9.80665, COR = 0.75 (the right column's
-first row), and a work-precision plot, the errors against the exact solution over h for direct
-(5-1) and moreau_jean.
+"""Figure 4 of the paper from Python: u, v, N and E against t under gravity (f = -9.80665), without
+a coefficient of restitution (left column) and with COR = 0.75 (right), the paper's scheme (5-1) at
+h = 1e-3 with the exact solution overlaid; and a work-precision plot, the errors against the exact
+solution over h for direct (5-1) and moreau_jean.
 
-    make python && PYTHONPATH=build/python /usr/bin/python3 examples/python/figure4.py [OUT_DIR]
+    python3 examples/python/figure4.py [OUT_DIR]        # the module installed (docs/python.md)
+    PYTHONPATH=build/python python3 examples/python/figure4.py [OUT_DIR]   # after make python
 
-With matplotlib it draws OUT_DIR/figure4_u.png and OUT_DIR/work_precision.png; without it, it
-writes the same data as OUT_DIR/figure4_u.csv and OUT_DIR/work_precision.csv (OUT_DIR: results/python).
+With matplotlib (Debian's python3-matplotlib) it draws OUT_DIR/figure4.png and
+OUT_DIR/work_precision.png; without it, it writes the same data as OUT_DIR/figure4.csv and
+OUT_DIR/work_precision.csv (OUT_DIR: results/python).
 """
 import os
 import sys
@@ -15,20 +18,30 @@ import numpy as np
 import impact
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-SCENE = os.path.join(HERE, "..", "..", "experiments", "figure4", "cor075.toml")
+SCENES = {name: os.path.join(HERE, "..", "..", "experiments", "figure4", name + ".toml")
+          for name in ("no_cor", "cor075")}
+TITLES = {"no_cor": "without COR", "cor075": "COR = 0.75"}
+CHANNELS = {"u": "u [m]", "v": "v [m/s]", "N": "N [m/s^2]", "E": "E [J/kg]"}
 METHODS = ["direct", "moreau_jean"]
 STEPS = "1e-4:1e-2:9:log"  # h from 1e-4 to 1e-2, evenly spaced in log10
+
+
+def figure4():
+    """Per scene, the run of direct (every channel) and the exact solution at the same times."""
+    runs = {}
+    for name, scene in SCENES.items():
+        run = impact.run(scene)
+        runs[name] = (run, impact.exact(scene, run["t"]))
+    return runs
 
 
 def work_precision():
     """Per method, the sup error in u and the h-weighted l1 error in v at each h (impact sweep's
     engine, against the exact event-driven solution)."""
-    curves = {}
-    for method in METHODS:
-        s = impact.sweep(SCENE, vary={"time.h": STEPS}, set={"method.name": method},
-                         summary=["err_u_sup", "err_v_l1"], against="exact")
-        curves[method] = s
-    return curves
+    return {method: impact.sweep(SCENES["cor075"], vary={"time.h": STEPS},
+                                 set={"method.name": method},
+                                 summary=["err_u_sup", "err_v_l1"], against="exact")
+            for method in METHODS}
 
 
 def write_csv(path, columns):
@@ -37,39 +50,59 @@ def write_csv(path, columns):
                header=",".join(names), comments="", fmt="%.17g")
 
 
+def write_data(out, runs, curves):
+    columns = {"t": runs["no_cor"][0]["t"]}
+    for name, (run, _) in runs.items():
+        for channel in CHANNELS:
+            columns[f"{name}_{channel}"] = run[channel]
+    write_csv(os.path.join(out, "figure4.csv"), columns)
+    columns = {"h": curves[METHODS[0]]["time.h"]}
+    for method in METHODS:
+        columns[method + "_err_u_sup"] = curves[method]["err_u_sup"]
+        columns[method + "_err_v_l1"] = curves[method]["err_v_l1"]
+    write_csv(os.path.join(out, "work_precision.csv"), columns)
+    print(f"matplotlib not installed: wrote {out}/figure4.csv and {out}/work_precision.csv")
+
+
+def draw(plt, out, runs, curves):
+    fig, axes = plt.subplots(len(CHANNELS), 2, figsize=(10, 9), sharex=True)
+    for column, (name, (run, exact)) in enumerate(runs.items()):
+        for row, (channel, label) in enumerate(CHANNELS.items()):
+            ax = axes[row, column]
+            ax.plot(run["t"], run[channel], lw=0.8, label="direct (5-1), h = 1e-3")
+            if channel in exact:  # the exact solution's N is a sum of impulses: not drawn
+                ax.plot(exact["t"], exact[channel], "k--", lw=0.6, label="exact")
+            ax.set_ylabel(label)
+            ax.grid(alpha=0.3)
+        axes[0, column].set_title(f"Figure 4, f = -9.80665, {TITLES[name]}")
+        axes[-1, column].set_xlabel("t [s]")
+    axes[0, 1].legend(loc="upper right", fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "figure4.png"), dpi=120)
+    fig, ax = plt.subplots(figsize=(6, 4.5))
+    for method in METHODS:
+        c = curves[method]
+        ax.loglog(c["time.h"], c["err_u_sup"], "o-", label=f"{method}: sup |u - u_exact| [m]")
+        ax.loglog(c["time.h"], c["err_v_l1"], "s--", label=f"{method}: h sum |v - v_exact| [m]")
+    ax.set(xlabel="h [s]", ylabel="error", title="Figure 4 with COR = 0.75: error against h")
+    ax.legend(fontsize=7, loc="lower right")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "work_precision.png"), dpi=120)
+    print(f"wrote {out}/figure4.png and {out}/work_precision.png")
+
+
 def main():
     out = sys.argv[1] if len(sys.argv) > 1 else os.path.join("results", "python")
     os.makedirs(out, exist_ok=True)
-    run = impact.run(SCENE)
-    curves = work_precision()
+    runs, curves = figure4(), work_precision()
     try:
         import matplotlib
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
     except ImportError:
-        write_csv(os.path.join(out, "figure4_u.csv"), {"t": run["t"], "u": run["u"]})
-        columns = {"h": curves[METHODS[0]]["time.h"]}
-        for method in METHODS:
-            columns[method + "_err_u_sup"] = curves[method]["err_u_sup"]
-            columns[method + "_err_v_l1"] = curves[method]["err_v_l1"]
-        write_csv(os.path.join(out, "work_precision.csv"), columns)
-        print(f"matplotlib not installed: wrote {out}/figure4_u.csv and {out}/work_precision.csv")
+        write_data(out, runs, curves)
         return
-    fig, ax = plt.subplots(figsize=(6, 3.5))
-    ax.plot(run["t"], run["u"], lw=0.8)
-    ax.set(xlabel="t [s]", ylabel="u [m]", title="Figure 4: f = -9.80665, COR = 0.75, h = 1e-3")
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "figure4_u.png"), dpi=150)
-    fig, ax = plt.subplots(figsize=(5, 4))
-    for method in METHODS:
-        c = curves[method]
-        ax.loglog(c["time.h"], c["err_u_sup"], "o-", label=f"{method}: sup |u - u_exact|")
-        ax.loglog(c["time.h"], c["err_v_l1"], "s--", label=f"{method}: h sum |v - v_exact|")
-    ax.set(xlabel="h [s]", ylabel="error", title="against the exact solution")
-    ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "work_precision.png"), dpi=150)
-    print(f"wrote {out}/figure4_u.png and {out}/work_precision.png")
+    draw(plt, out, runs, curves)
 
 
 if __name__ == "__main__":
