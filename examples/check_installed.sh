@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The examples against the installed package, as a program outside the repository uses it:
 # installs BUILD (already built) to a temporary prefix, builds examples/ there with
-# find_package(impact 0.2) and runs both, then compiles one by hand with pkg-config's flags.
+# find_package(impact 0.2) and runs them, then compiles one by hand with pkg-config's flags.
 #   bash examples/check_installed.sh BUILD
 set -euo pipefail
 build=${1:?usage: check_installed.sh BUILD}
@@ -13,7 +13,7 @@ cmake --install "$build" --prefix "$tmp/prefix" > "$tmp/install.log"
 cmake -S "$examples" -B "$tmp/b" -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$tmp/prefix" > "$tmp/configure.log" 2>&1 ||
   { cat "$tmp/configure.log"; exit 1; }
 cmake --build "$tmp/b" -j "${JOBS:-2}" > "$tmp/build.log" 2>&1 || { cat "$tmp/build.log"; exit 1; }
-for example in bouncing_ball ensemble_sweep; do
+for example in bouncing_ball ensemble_sweep scene_run; do
   echo "== $example (find_package(impact 0.2), impact::impact)"
   "$tmp/b/$example"
 done
