@@ -258,8 +258,8 @@ TEST_CASE("chain: bad parameters and non-finite values are refused or reported",
                     Catch::Contains("step 0") && Catch::Contains("non-finite result x1 = "));
 }
 
-TEST_CASE("chain: the README's example runs", "[chain][regression]") {
-  // README.md, "Beyond one particle: a two-mass chain", as written there.
+TEST_CASE("chain: the example of docs/library.md runs", "[chain][regression]") {
+  // docs/library.md, "Beyond one particle: a two-mass chain", as written there.
   const impact::Chain chain{
       .m1 = 1, .m2 = 0.5, .k = 200, .ell = 1, .g = -9.81, .phi = 0, .cor = 0.8};
   impact::ChainState start;

@@ -59,7 +59,7 @@ int main(int argc, char** argv) {
       "run", "Run one scene and write its trajectory as CSV (header t,<channels>).");
   impact::cli::RunOptions run_options;
   std::string against;
-  run_cmd->add_option("SCENE", run_options.scene, "Scene file (TOML); see README.md, 'Scenes'")
+  run_cmd->add_option("SCENE", run_options.scene, "Scene file (TOML); see docs/scenes.md")
       ->required();
   run_cmd
       ->add_option("--set", run_options.overrides,
@@ -81,7 +81,7 @@ int main(int argc, char** argv) {
       "Also write the run's events as CSV to this file ('-': standard output, when --out is a "
       "file), header t,kind,v_before,v_after, one row per impact, stick (the particle comes to "
       "rest on the floor) or lift (it leaves the floor after resting); exact events where the "
-      "method knows them, else read off the contact steps (README.md, 'Time-dependent force'). "
+      "method knows them, else read off the contact steps (docs/events.md). "
       "Written as --out is.");
   run_cmd
       ->add_option("--against", against,

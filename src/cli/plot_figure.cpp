@@ -69,7 +69,7 @@ std::string quantity_label(const std::string& name) {
 // provenance sidecar does, and without one both are named.
 const Text kEnergyNote{
     "E = v^2/2 - f u (3-1); with a force f(t), v^2/2 - f(0) u(0) - W(t), W the work of f "
-    "(README, 'Time-dependent force')"};
+    "(docs/scenes.md, 'The E channel')"};
 
 const Text kThinnedNote{
     "each curve of more than 8192 points drawn through the first, lowest, highest and last of "
@@ -117,7 +117,7 @@ Figure run_figure(const RunData& run, const RunData* against, const EventsData* 
     figure.title.push_back(!run.force_depends_on_t ? kEnergyNote
                            : *run.force_depends_on_t
                                ? Text{"E = v^2/2 - f(0) u(0) - W(t), W the work of the force f(t) "
-                                      "(README, 'Time-dependent force')"}
+                                      "(docs/scenes.md, 'The E channel')"}
                                : Text{"E = v^2/2 - f u (3-1)"});
   for (std::size_t c = 0; c < run.channels.size(); ++c) {
     std::string ylabel;

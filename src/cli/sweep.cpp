@@ -42,7 +42,7 @@ CLI::App* add_sweep_command(CLI::App& app, SweepOptions& o) {
       "sweep",
       "Run one scene over a grid of parameters on every core: one CSV row of summary quantities "
       "per point. Also: impact sweep --merge PART... --out FILE.");
-  cmd->add_option("SCENE", o.scene, "Scene file (TOML); see README.md, 'Scenes'");
+  cmd->add_option("SCENE", o.scene, "Scene file (TOML); see docs/scenes.md");
   cmd->add_option("--vary", o.varies,
                   "table.key=SPEC: the values of one key (repeatable; the product is swept, the "
                   "last --vary varying fastest), e.g. --vary time.h=1e-4:1e-2:41:log")

@@ -1,5 +1,5 @@
 // `impact sweep`: one scene over a grid of parameters, on every core, in shards for many machines,
-// and `impact sweep --merge` to join the shards' parts (README.md, "Sweeps").
+// and `impact sweep --merge` to join the shards' parts (docs/sweeps.md).
 #pragma once
 
 #include <CLI/CLI.hpp>

@@ -195,7 +195,7 @@ Report report(const std::vector<impact::Curve>& curves, const Partings& parted,
 CLI::App* add_work_precision_command(CLI::App& app, WorkPrecisionCommandOptions& o) {
   CLI::App* cmd =
       app.add_subcommand("work-precision", "Errors, CPU time and orders over a sweep of h.");
-  cmd->add_option("SCENE", o.scene, "Scene file (TOML); see README.md, 'Scenes'")->required();
+  cmd->add_option("SCENE", o.scene, "Scene file (TOML); see docs/scenes.md")->required();
   cmd->add_option("--methods", o.methods,
                   "The time-steppers, comma-separated, each with its default parameters (the "
                   "scene's [method] table is not used): " +

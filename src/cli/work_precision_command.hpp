@@ -1,7 +1,7 @@
 // `impact work-precision SCENE`: every chosen time-stepper's errors against the scene's reference
 // and the CPU time of its solve over a sweep of h, the observed orders, and a log-log figure: the
 // recipe of experiments/work_precision (work_precision_curves.hpp's step_curves) for any scene
-// (README.md, "Work against precision for your own scene").
+// (docs/outputs.md, "Work against precision for your own scene").
 #pragma once
 
 #include <CLI/CLI.hpp>

@@ -217,7 +217,7 @@ constexpr Eigen::Index kPadding = 192;
 // 10 values per vector in registers, moreau_jean 6 (experiments/performance/README.md); direct's
 // also on an Intel Xeon family 6 model 167 (of 3, 4, 6, 8). The summary adds 8 values per vector
 // that change at every step; with them, 3 vectors for direct and 4 for moreau_jean were the
-// fastest of 2, 3, 4 and 6 (README.md, "Sweeps").
+// fastest of 2, 3, 4 and 6 (docs/sweeps.md).
 template <int Lanes, int Vectors, int SummaryVectors>
 [[gnu::always_inline]] inline void direct_entry(const Columns& c, Eigen::Index n,
                                                 std::int64_t first_step, std::int64_t steps,

@@ -1,5 +1,5 @@
 // The library's public API in one include, for a program that uses the installed package
-// (README.md, "Using impact from your own C++ code"): the model, the steppers behind one interface
+// (docs/library.md): the model, the steppers behind one interface
 // and their registry, the time loop, the exact reference and the error norms, the ensemble, and
 // the writers of rows and events.
 #pragma once
