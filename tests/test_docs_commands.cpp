@@ -96,8 +96,8 @@ int run_page(const TempDir& dir, const std::vector<fs::path>& pages) {
       continue;
     }
     const auto script = dir.write(".block.sh", block.text);
-    const auto r = dir.shell("PATH=" + quote(dir / "bin") + ":\"$PATH\" bash -euo pipefail " +
-                             quote(script));
+    const auto r =
+        dir.shell("PATH=" + quote(dir / "bin") + ":\"$PATH\" bash -euo pipefail " + quote(script));
     INFO("stdout:\n" << r.out << "stderr:\n" << r.err);
     CHECK(r.code == 0);
     ++ran;
@@ -143,8 +143,8 @@ TEST_CASE("every relative link of the README and docs/ names a file that exists"
   int links = 0;
   for (const auto& page : pages) {
     const std::string text = slurp(page.string());
-    for (auto it = std::sregex_iterator(text.begin(), text.end(), link); it != std::sregex_iterator();
-         ++it) {
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), link);
+         it != std::sregex_iterator(); ++it) {
       std::string target = (*it)[1].str();
       if (target.rfind("http", 0) == 0 || target[0] == '#') continue;
       target = target.substr(0, target.find('#'));
