@@ -63,6 +63,36 @@ TEST_CASE(
   CHECK(text.find("| **beyond the paper**: z |") != std::string::npos);
 }
 
+TEST_CASE(
+    "ledger: an error in the paper names its kind (typo, wrong constant, ...), the tally shows it "
+    "and counts the claims on the paper apart from those beyond it",
+    "[ledger][regression]") {
+  const std::string dir = std::string(IMPACT_BUILD_DIR) + "/tests";
+  const std::string source = dir + "/claims_kinds.md", out = dir + "/claims_kinds_out.md";
+  const std::string header =
+      "# t\n| id | a | b | c | d | e |\n| --- | --- | --- | --- | --- | --- |\n";
+  const auto write = [&](const std::string& rows) {
+    return std::system(("printf '%s' '" + header + rows + "' > '" + source + "'").c_str());
+  };
+  REQUIRE(write("| C1 | x | y | f / test_f | z | error in the paper (typo): eps inside |\n"
+                "| C2 | x | y | f / test_f | z | error in the paper (false statement): w |\n"
+                "| C3 | x | y | f / test_f | z | beyond the paper: v |\n") == 0);
+  REQUIRE(claims_tool("markdown '" + source + "' experiments '" + out + "'") == 0);
+  std::ifstream in(out);
+  const std::string text{std::istreambuf_iterator<char>(in), {}};
+  CHECK(text.find("**3 claims: 2 on the paper's own statements (0 reproduced, 0 reproduced under "
+                  "a stated condition, 0 holds by construction, 0 not reproduced, 2 error in the "
+                  "paper) and 1 beyond the paper.**") != std::string::npos);
+  CHECK(text.find("| error in the paper (2) | C1 (typo), C2 (false statement) |") !=
+        std::string::npos);
+  CHECK(text.find("| **error in the paper (typo)**: eps inside |") != std::string::npos);
+  // Without a kind, or with one outside the vocabulary: an error of the generator.
+  REQUIRE(write("| C1 | x | y | f / test_f | z | error in the paper: eps inside |\n") == 0);
+  CHECK(claims_tool("markdown '" + source + "' experiments") != 0);
+  REQUIRE(write("| C1 | x | y | f / test_f | z | error in the paper (a slip): eps |\n") == 0);
+  CHECK(claims_tool("markdown '" + source + "' experiments") != 0);
+}
+
 TEST_CASE("ledger: the terminal table names every number it prints", "[ledger][regression]") {
   const std::string out = std::string(IMPACT_BUILD_DIR) + "/tests/claims_table.txt";
   REQUIRE(std::system(("cd '" + std::string(IMPACT_SOURCE_DIR) + "' && '" + IMPACT_BUILD_DIR +

@@ -177,8 +177,8 @@ TEST_CASE("plot: events marked on a run, a reference overlaid, the energy of f(t
   write_runs(dir);
   REQUIRE(dir.run("plot run.csv --events ev.csv --against ref.csv -o both.svg").code == 0);
   const std::string svg = slurp(dir / "both.svg");
-  CHECK_THAT(svg,
-             Contains("impact (21)") && Contains("stick (1)") && Contains("reference: ref.csv"));
+  // The reference is named by its method, from its provenance file ref.csv.json.
+  CHECK_THAT(svg, Contains("impact (21)") && Contains("stick (1)") && Contains("reference: exact"));
   // An events CSV alone: v before and after each event.
   REQUIRE(dir.run("plot ev.csv -o ev.svg").code == 0);
   CHECK_THAT(slurp(dir / "ev.svg"), Contains("impact: 21, stick: 1, lift: 0"));

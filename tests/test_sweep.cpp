@@ -167,6 +167,10 @@ TEST_CASE("sweep: invalid points and options exit 2 naming the point and the key
       {"--vary time.h=1:2", "a range is a:b:n"},
       {"--vary time.h=1e-3 --summary rest_time,bogus", "unknown quantity 'bogus'"},
       {"--vary time.h=1e-3 --summary err_u_sup", "needs --against exact"},
+      // The reference would run at every point and nothing be written from it.
+      {"--vary time.h=1e-3 --against exact --summary rest_time,E_T",
+       "--against exact: --summary rest_time,E_T names no error measure (err_u_sup, err_v_l1, "
+       "err_E_T, err_first_impact, reference_s)"},
       {"--vary time.h=1e-3 --against nothing", "the only reference is 'exact'"},
       {"--vary time.h=1e-3 --shard 3/2", "--shard 3/2"},
       {"--vary time.h=1e-3 --instruction-set sse9", "--instruction-set sse9: not one"},

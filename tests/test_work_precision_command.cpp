@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdlib>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -100,6 +101,30 @@ TEST_CASE("work-precision: a chaotic scene warns where its two references part a
   CHECK_THAT(r.err, Contains("warning: direct at h = 0.001: two references 1e-10 apart in v0"));
   for (const std::string& row : lines_of(slurp(dir / "wp.csv")))
     if (row.rfind("direct,", 0) == 0) CHECK(row.back() != ',');  // reference_parts_at given
+}
+
+TEST_CASE(
+    "work-precision: without --methods a scene with a force of the state runs the default methods "
+    "that can run it and names the others with the reason",
+    "[cli][work_precision][regression]") {
+  TempDir dir;
+  const std::string scene =
+      quote(kSource + "/experiments/impact_oscillator/periodic.toml") + " --set time.T=1 ";
+  const Result r = dir.run("work-precision " + scene + "--h 1e-2,5e-3 --repeat 1 -o wp.csv");
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  CHECK_THAT(r.err, Contains("impact work-precision: fb_newton left out of the default methods: "
+                             "it takes a force of t only, and force.expression reads u or v"));
+  std::set<std::string> methods;
+  for (const std::string& row : lines_of(slurp(dir / "wp.csv")))
+    methods.insert(row.substr(0, row.find(',')));
+  CHECK(methods == std::set<std::string>{"method", "direct", "moreau_jean"});
+  // --quiet drops the note; a method named in --methods that cannot run the scene is refused.
+  CHECK(dir.run("work-precision " + scene + "--h 1e-2,5e-3 --repeat 1 -q -o wp.csv").err.empty());
+  const Result named = dir.run("work-precision " + scene + "--methods direct,fb_newton -o x.csv");
+  CHECK(named.code == 2);
+  CHECK_THAT(named.err, Contains("--methods direct,fb_newton: fb_newton cannot run this scene: it "
+                                 "takes a force of t only, and force.expression reads u or v"));
 }
 
 TEST_CASE("work-precision: bad flags exit 2 naming the flag, the value and the range",

@@ -38,10 +38,19 @@ constexpr std::array<const char*, 6> kVerdicts = {"reproduced under a stated con
                                                   "reproduced"};
 constexpr std::array<std::size_t, 6> kTallyOrder = {5, 0, 1,
                                                     2, 3, 4};  // reading order of the tally
+constexpr std::size_t kError = 3, kBeyond = 4;  // "error in the paper", "beyond the paper"
+// What kind of error in the paper a row finds, in parentheses right after the verdict: a misprint
+// the surrounding text corrects, a statement false as printed that one constant or factor mends,
+// a formula with a term or sign wrong, a statement false that no constant mends, a true statement
+// whose proof fails.
+constexpr std::array<const char*, 5> kErrorKinds = {"typo", "wrong constant", "wrong formula",
+                                                    "false statement", "flawed proof"};
 
 struct Row {
   std::vector<std::string> cells;  // id | where | claim | experiment / test | measured | verdict
   std::size_t verdict = 0;         // index into kVerdicts
+  std::size_t kind = 0;            // index into kErrorKinds, for an error in the paper
+  std::size_t verdict_words = 0;   // the length of the verdict (and kind) at the cell's start
 };
 
 struct Error : std::runtime_error {
@@ -102,6 +111,18 @@ Row parse_row(const std::string& line) {
   if (row.cells[3].find("test_") == std::string::npos)
     throw Error(id + ": the experiment / test cell names no test (test_<file>)");
   row.verdict = k;
+  row.verdict_words = std::string(kVerdicts[k]).size();
+  if (k == kError) {
+    for (; row.kind < kErrorKinds.size(); ++row.kind)
+      if (verdict.rfind(std::string("error in the paper (") + kErrorKinds[row.kind] + ")", 0) == 0)
+        break;
+    if (row.kind == kErrorKinds.size())
+      throw Error(id +
+                  ": an error in the paper names its kind next, \"error in the paper (KIND)\", " +
+                  "KIND one of typo / wrong constant / wrong formula / false statement / flawed "
+                  "proof");
+    row.verdict_words += std::string(kErrorKinds[row.kind]).size() + 3;
+  }
   return row;
 }
 
@@ -197,14 +218,22 @@ std::vector<std::string> read_lines(const std::string& path) {
   return lines;
 }
 
+// The count line (the claims on the paper's statements, then those beyond it) and the table of
+// verdicts, an error in the paper with its kind.
 std::string tally(const std::vector<Row>& rows) {
   std::array<std::vector<std::string>, kVerdicts.size()> ids;
-  for (const Row& row : rows) ids[row.verdict].push_back(row.cells[0]);
+  for (const Row& row : rows)
+    ids[row.verdict].push_back(row.cells[0] + (row.verdict == kError
+                                                   ? std::string(" (") + kErrorKinds[row.kind] + ")"
+                                                   : std::string()));
   std::ostringstream out;
-  out << "**" << rows.size() << " claims:";
+  out << "**" << rows.size() << " claims: " << rows.size() - ids[kBeyond].size()
+      << " on the paper's own statements (";
   for (std::size_t i = 0; i < kTallyOrder.size(); ++i)
-    out << (i ? "," : "") << " " << ids[kTallyOrder[i]].size() << " " << kVerdicts[kTallyOrder[i]];
-  out << ".**\n\n| verdict | claims |\n| --- | --- |\n";
+    if (kTallyOrder[i] != kBeyond)
+      out << (i ? ", " : "") << ids[kTallyOrder[i]].size() << " " << kVerdicts[kTallyOrder[i]];
+  out << ") and " << ids[kBeyond].size()
+      << " beyond the paper.**\n\n| verdict | claims |\n| --- | --- |\n";
   for (const std::size_t k : kTallyOrder) {
     out << "| " << kVerdicts[k] << " (" << ids[k].size() << ") |";
     for (std::size_t i = 0; i < ids[k].size(); ++i) out << (i ? ", " : " ") << ids[k][i];
@@ -235,7 +264,7 @@ std::string markdown(const std::string& source, const std::string& references) {
     const Row& row = rows[r++];
     std::vector<std::string> c = row.cells;
     c[4] = substitute(row, numbers);
-    const std::size_t n = std::string(kVerdicts[row.verdict]).size();
+    const std::size_t n = row.verdict_words;
     c[5] = "**" + c[5].substr(0, n) + "**" + c[5].substr(n);
     out << "|";
     for (const std::string& cell : c) out << " " << escape_bars(cell) << " |";

@@ -19,6 +19,7 @@
 #include "cli/plot_figure.hpp"
 #include "cli/sweep_csv.hpp"
 #include "impact/output.hpp"
+#include "impact/registry.hpp"
 #include "scene/toml_text.hpp"
 
 extern char** environ;
@@ -71,25 +72,36 @@ std::string regular_file_head(const std::string& path) {
   return text;
 }
 
-// What the provenance sidecar of a run's CSV (CSV.json, written by impact run) says of its force;
-// nothing when there is none, it is not a regular file, or it is not one of ours.
-std::optional<bool> force_depends_on_t(const std::string& csv) {
+// What the provenance sidecar of a run's CSV (CSV.json, written by impact run) says of its force
+// and its method; nothing when there is none, it is not a regular file, or it is not one of ours.
+// The method is taken only when it is a name of the method table, and then as the table spells it.
+void read_sidecar(const std::string& csv, RunData& run) {
   const std::string text = regular_file_head(csv + ".json");
   for (const bool value : {false, true})
     if (text.find(std::string("\n  \"force_depends_on_t\": ") + (value ? "true" : "false") +
                   ",\n") != std::string::npos)
-      return value;
-  return std::nullopt;
+      run.force_depends_on_t = value;
+  const std::string key = "\n  \"method\": \"";
+  if (const auto at = text.find(key); at != std::string::npos) {
+    const auto begin = at + key.size(), end = text.find('"', begin);
+    if (end != std::string::npos)
+      if (const MethodInfo* method = find_method(std::string_view(text).substr(begin, end - begin)))
+        run.method = std::string(method->name);
+  }
 }
 
 // The figure may not replace what it draws: --out against the CSV, --against and --events, as
 // files (a link, another spelling).
 void check_out(const PlotOptions& o, const std::string& out) {
-  const std::string sidecar = o.csv + ".json";  // read for what the E channel is
-  const std::pair<const std::string*, const char*> inputs[] = {{&o.csv, "the CSV"},
-                                                               {&sidecar, "the CSV's provenance"},
-                                                               {&o.against, "--against"},
-                                                               {&o.events, "--events"}};
+  // The provenance files are read for what the E channel is and which method each run is.
+  const std::string sidecar = o.csv + ".json";
+  const std::string against_sidecar = o.against.empty() ? "" : o.against + ".json";
+  const std::pair<const std::string*, const char*> inputs[] = {
+      {&o.csv, "the CSV"},
+      {&sidecar, "the CSV's provenance"},
+      {&o.against, "--against"},
+      {&against_sidecar, "the provenance of --against"},
+      {&o.events, "--events"}};
   for (const auto& [input, what] : inputs)
     if (!input->empty() && same_output(out, *input))
       throw PlotInputError(printable(out) + ": --out names " + what + " (" + printable(*input) +
@@ -113,11 +125,12 @@ Figure read_figure(const PlotOptions& o) {
   if (is_sweep_header(header)) return sweep_figure(read_sweep(lines, header));
   if (is_events_header(header)) return events_figure(read_events(lines, header));
   RunData run = read_run(lines, header);
-  run.force_depends_on_t = force_depends_on_t(o.csv);
+  read_sidecar(o.csv, run);
   std::optional<RunData> reference;
   if (!o.against.empty()) {
     CsvLines ref_lines(o.against);
     reference = read_run(ref_lines, read_header(ref_lines));
+    read_sidecar(o.against, *reference);
     bool shared = false;
     for (const std::string& c : reference->channels)
       shared =
@@ -216,8 +229,12 @@ CLI::App* add_plot_command(CLI::App& app, PlotOptions& o) {
                   "Mark the run's events (impact run --events ev.csv) on every panel, one dotted "
                   "line per event, coloured by kind");
   cmd->footer(wrap(
-      "A run's E channel is v^2/2 - f u (3-1) for a constant force and v^2/2 - f(0) u(0) - W(t) "
-      "for a force f(t); the figure says so. A sweep with more than one varied key gets one curve "
+      "A run's E channel is v^2/2 - f u (kinetic plus potential energy per unit mass, the "
+      "paper's (3-1)) for a constant force and v^2/2 - f(0) u(0) - W(t), W the work of f since "
+      "t = 0, for a force f(t); the figure says which, from the run's provenance file CSV.json "
+      "(both without one). A run's curves are named by its method, from the same file (without "
+      "one, by the CSV's name); every panel has the same margins, so the t axes line up, and "
+      "the axes span the data. A sweep with more than one varied key gets one curve "
       "per combination of the other keys' values (at most 8). Each curve of more than 8192 "
       "points is drawn through the first, lowest, highest and last value of every group of "
       "consecutive rows (4096 to 8192 groups), which keeps every extreme and every impulse; the "

@@ -103,9 +103,11 @@ struct RunData {
   std::vector<bool> internal;  // per channel: an internal variable
   std::vector<Curve> curves;
   std::int64_t rows = 0;
-  // Whether the run's force depends on t, from its provenance sidecar (CSV.json), when there is
-  // one: it says which energy the E channel is.
+  // From the run's provenance sidecar (CSV.json), when there is one: whether its force depends on
+  // t (which energy the E channel is) and its method (a name of the method table), the name of
+  // its curves.
   std::optional<bool> force_depends_on_t;
+  std::optional<std::string> method;
 };
 RunData read_run(CsvLines& lines, const std::string& header);
 

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <map>
+#include <string_view>
 #include <utility>
 
 #include "impact/output.hpp"
@@ -20,15 +21,20 @@ static_assert(std::size(kCurveColours) == kMaxSweepCurves);
 struct ChannelStyle {
   const char* ylabel;
   bool impulses;  // N and iterations hold a value per step (or per row), drawn as such
+  const char* colour = kRunColour;
 };
 
+// N is the floor's impulse of each step over h; N_scheme the scheme's own N^l of (4-3), which
+// Newton's law with a COR does not change: another quantity, so another colour (and a note).
 const std::map<std::string, ChannelStyle> kChannelStyles = {
-    {"u", {"u(t) [m]", false}},
-    {"v", {"v(t) [m/s]", false}},
-    {"N", {"N(t) [m/s^2]", true}},
-    {"E", {"E(t) [J/kg]", false}},
-    {"iterations", {"iterations per step", true}},
+    {"u", {"u(t) [m]", false}},    {"v", {"v(t) [m/s]", false}},
+    {"N", {"N(t) [m/s^2]", true}}, {"N_scheme", {"N_scheme(t) [m/s^2]", true, "'#D55E00'"}},
+    {"E", {"E(t) [J/kg]", false}}, {"iterations", {"iterations per step", true}},
 };
+
+const Text kSchemeForceNote{
+    "N: the floor's impulse per step over h; N_scheme: the scheme's solve, before a COR's "
+    "rebound replaces the velocity"};
 
 const std::map<std::string, std::string> kQuantityLabels = {
     {"u_T", "u at the last grid time [m]"},
@@ -57,7 +63,7 @@ ChannelStyle channel_style(const RunData& run, std::size_t c, std::string& label
       return it->second;
     }
   label = name + "(t)" + (run.internal[c] ? " (internal variable)" : "");
-  return {nullptr, false};
+  return {nullptr, false, kRunColour};
 }
 
 std::string quantity_label(const std::string& name) {
@@ -65,11 +71,14 @@ std::string quantity_label(const std::string& name) {
   return name.substr(0, name.size() - 2) + " (internal variable) at the last grid time";
 }
 
-// The E channel is (3-1) for a constant force; with f(t) the CSV does not say which it is: its
-// provenance sidecar does, and without one both are named.
-const Text kEnergyNote{
-    "E = v^2/2 - f u (3-1); with a force f(t), v^2/2 - f(0) u(0) - W(t), W the work of f "
-    "(docs/scenes.md, 'The E channel')"};
+// The E channel is the energy of a constant force; with f(t) the CSV does not say which it is:
+// its provenance sidecar does, and without one both are named.
+const Text kConstantEnergy{
+    "E = v^2/2 - f u, kinetic plus potential energy per unit mass under the constant force f"};
+const Text kTimeEnergy{"E = v^2/2 - f(0) u(0) - W(t), W the work of the force f(t) since t = 0"};
+const Text kEnergyNote[] = {
+    {"E = v^2/2 - f u, kinetic plus potential energy per unit mass, for a constant force f;"},
+    {"with a force f(t): E = v^2/2 - f(0) u(0) - W(t), W the work of f since t = 0"}};
 
 const Text kThinnedNote{
     "each curve of more than 8192 points drawn through the first, lowest, highest and last of "
@@ -108,17 +117,28 @@ Series event_marks(const Curve& times, double low, double high, std::size_t kind
 
 }  // namespace
 
+// A run's curves are named by its method (from its provenance), else by its file.
+Text run_name(const RunData& run, const std::string& before, Name file,
+              const std::string& after = {}) {
+  return run.method ? Text{before + *run.method + after} : Text{before, file, after};
+}
+
 Figure run_figure(const RunData& run, const RunData* against, const EventsData* events) {
   Figure figure;
   figure.key = against || events;
-  figure.title.push_back({"", Name::csv});
+  figure.shared_x = true;
+  figure.pad_x = false;  // t from the first row to the last
+  figure.title.push_back(run.method ? Text{"", Name::csv, ": a run of " + *run.method}
+                                    : Text{"", Name::csv});
   if (run.curves.front().thinned()) figure.title.push_back(thinned_note(run.rows, run.curves[0]));
-  if (std::count(run.channels.begin(), run.channels.end(), "E"))
-    figure.title.push_back(!run.force_depends_on_t ? kEnergyNote
-                           : *run.force_depends_on_t
-                               ? Text{"E = v^2/2 - f(0) u(0) - W(t), W the work of the force f(t) "
-                                      "(docs/scenes.md, 'The E channel')"}
-                               : Text{"E = v^2/2 - f u (3-1)"});
+  if (std::count(run.channels.begin(), run.channels.end(), "E")) {
+    if (!run.force_depends_on_t)
+      figure.title.insert(figure.title.end(), std::begin(kEnergyNote), std::end(kEnergyNote));
+    else
+      figure.title.push_back(*run.force_depends_on_t ? kTimeEnergy : kConstantEnergy);
+  }
+  if (std::count(run.channels.begin(), run.channels.end(), "N_scheme"))
+    figure.title.push_back(kSchemeForceNote);
   for (std::size_t c = 0; c < run.channels.size(); ++c) {
     std::string ylabel;
     const ChannelStyle style = channel_style(run, c, ylabel);
@@ -140,15 +160,19 @@ Figure run_figure(const RunData& run, const RunData* against, const EventsData* 
       for (std::size_t k = 0; k < 3; ++k)
         if (events->count[k] > 0)
           panel.series.push_back(event_marks(events->before[k], low, high, k, events->count[k]));
-    const std::string colour = std::string(" lc rgb ") + kRunColour;
+    const std::string colour = std::string(" lc rgb ") + style.colour;
+    Text name = run_name(run, "", Name::csv);
+    if (std::string_view(style.colour) != kRunColour) name.after += " (" + run.channels[c] + ")";
     panel.series.push_back(series(curve.points(),
                                   (style.impulses ? "impulses lw 1.5" : "lines lw 1.5") + colour,
-                                  figure.key ? Text{"", Name::csv} : Text{}));
+                                  figure.key ? name : Text{}));
     if (reference)
       panel.series.push_back(series(
           style.impulses ? nonzero(reference->points()) : reference->points(),
           style.impulses ? "points pt 6 ps 0.6 lc rgb 'black'" : "lines lw 1.5 dt 2 lc rgb 'black'",
-          {"reference: ", Name::against}));
+          style.impulses
+              ? run_name(*against, "reference: ", Name::against, ", tips of its impulses")
+              : run_name(*against, "reference: ", Name::against)));
     figure.panels.push_back(std::move(panel));
   }
   return figure;
@@ -157,10 +181,10 @@ Figure run_figure(const RunData& run, const RunData* against, const EventsData* 
 Figure events_figure(const EventsData& events) {
   Figure figure;
   figure.key = true;
+  figure.shared_x = true;
   figure.title.push_back({"", Name::csv});
   std::string counts;
-  Panel panel{.xlabel = "t [s]",
-              .ylabel = "v [m/s] just before (filled) and after (open) the event"};
+  Panel panel{.xlabel = "t [s]", .ylabel = "v [m/s] before and after"};
   for (std::size_t k = 0; k < 3; ++k) {
     const std::string kind = EventsData::kKinds[k];
     counts += (k ? ", " : "") + kind + ": " + std::to_string(events.count[k]);
@@ -199,6 +223,7 @@ Figure events_figure(const EventsData& events) {
 Figure sweep_figure(const SweepData& sweep) {
   Figure figure;
   figure.key = sweep.curve_names.size() > 1;
+  figure.shared_x = true;
   figure.columns = sweep.quantities.size() > 3 ? 2 : 1;
   figure.title.push_back({"", Name::csv});
   figure.title.push_back(
@@ -219,7 +244,7 @@ Figure sweep_figure(const SweepData& sweep) {
   x_positive = any && x_low > 0;
   if (thinned) figure.title.push_back(kThinnedNote);
   if (std::count(sweep.quantities.begin(), sweep.quantities.end(), "E_T"))
-    figure.title.push_back(kEnergyNote);
+    figure.title.insert(figure.title.end(), std::begin(kEnergyNote), std::end(kEnergyNote));
   for (std::size_t q = 0; q < sweep.quantities.size(); ++q) {
     Panel panel{.xlabel = sweep.keys[0],
                 .ylabel = sweep.quantities[q] + ": " + quantity_label(sweep.quantities[q])};

@@ -15,13 +15,16 @@ namespace impact::cli {
 // The names given on the command line, as gnuplot sees them.
 enum class Name { none = 0, csv = 1, against = 2, events = 3 };
 
-// Text in a figure: `words` (plain ASCII, written by this code) followed by a name, if any.
+// Text in a figure: `words` (plain ASCII, written by this code) followed by a name, if any, and
+// `after` (this code's words again).
 struct Text {
   Text() = default;
-  Text(std::string words, Name name = Name::none) : words(std::move(words)), name(name) {}
-  bool empty() const { return words.empty() && name == Name::none; }
+  Text(std::string words, Name name = Name::none, std::string after = {})
+      : words(std::move(words)), name(name), after(std::move(after)) {}
+  bool empty() const { return words.empty() && name == Name::none && after.empty(); }
   std::string words;
   Name name = Name::none;
+  std::string after;
 };
 
 struct Series {
@@ -38,11 +41,18 @@ struct Panel {
   std::vector<Series> series{};
 };
 
+// Every panel has fixed margins, so that the plot areas of a column share their x extent
+// whatever the width of the tic labels, and the axis ranges are those of the data.
 struct Figure {
   std::vector<Text> title;  // one line each
   std::vector<Panel> panels;
   int columns = 1;
-  bool key = false;  // a key below every panel
+  // One key for the figure, between its title and its panels: each distinct series (title and
+  // style) once, whichever panels draw it.
+  bool key = false;
+  bool shared_x =
+      false;          // every panel's x range is that of all the panels' data (t, a sweep's key)
+  bool pad_x = true;  // a margin beyond the data on x (false: t from the first row to the last)
 };
 
 // The script for a figure in `format` (png, pdf or svg), drawn to gnuplot's standard output.

@@ -53,7 +53,9 @@ CLI::App* add_sweep_command(CLI::App& app, SweepOptions& o) {
                   "Quantities to write, comma-separated, in this order (default: all but wall_s, "
                   "and the err_* ones with --against exact)");
   cmd->add_option("--against", o.against,
-                  "exact: add the error measures against the exact solution (err_*)");
+                  "exact: add the error measures against the exact solution (err_*); with "
+                  "--summary, that list must name one of them (exit 2 otherwise: the reference "
+                  "would run for nothing)");
   cmd->add_option("--threads", o.threads, "Threads (default: one per core)")
       ->check(CLI::Range(1, kMaxThreads));
   cmd->add_option("--shard", o.shard,

@@ -185,6 +185,16 @@ std::vector<Quantity> parse_summary(const std::string& list, bool against_exact,
       throw SceneError("--summary " + list + ": '" + name + "' needs --against exact");
     quantities.push_back(q);
   }
+  // The reference would be run at every point and nothing written from it: refused, as an error
+  // measure without --against is.
+  if (against_exact && std::none_of(quantities.begin(), quantities.end(), is_error_measure)) {
+    std::string measures;
+    for (std::size_t i = 0; i < names.size(); ++i)
+      if (is_error_measure(named[i])) measures += (measures.empty() ? "" : ", ") + names[i];
+    throw SceneError("--against exact: --summary " + list + " names no error measure (" + measures +
+                     "), so the reference would run at every point for nothing; add "
+                     "one to --summary, or leave --against out");
+  }
   return quantities;
 }
 

@@ -51,15 +51,39 @@ std::vector<std::string> parse_methods(const std::string& text, const Model& mod
       throw SceneError("--methods " + text + ": '" + name +
                        "' is not a time-stepper swept over h; the methods are " +
                        swept_method_names() + ", comma-separated");
-    if (!honours(*info, model))
-      throw SceneError("--methods " + text + ": " + name +
-                       " does not honour this scene's force or COR (impact run --help lists what "
-                       "each method honours)");
+    if (const std::string why = not_honoured(*info, model); !why.empty())
+      throw SceneError("--methods " + text + ": " + name + " cannot run this scene: " + why +
+                       " (impact run --help lists what each method honours)");
     if (std::find(names.begin(), names.end(), name) != names.end())
       throw SceneError("--methods " + text + ": " + name + " is named twice");
     names.push_back(name);
     begin = comma + 1;
   }
+  return names;
+}
+
+// Without --methods: those of the default list that can run the scene, the others named on
+// standard error with the reason (unless --quiet); none left is bad input.
+std::vector<std::string> default_methods(const Model& model, bool quiet) {
+  std::vector<std::string> names;
+  std::string left_out;
+  const std::string list = kDefaultMethods;
+  for (std::size_t begin = 0; begin <= list.size();) {
+    const std::size_t comma = std::min(list.find(',', begin), list.size());
+    const std::string name = list.substr(begin, comma - begin);
+    begin = comma + 1;
+    const std::string why = not_honoured(*find_method(name), model);
+    if (why.empty())
+      names.push_back(name);
+    else
+      left_out +=
+          "impact work-precision: " + name + " left out of the default methods: " + why + "\n";
+  }
+  if (names.empty())
+    throw SceneError(std::string("--methods (default ") + kDefaultMethods +
+                     "): none of them can run this scene; name the methods to sweep, from " +
+                     swept_method_names());
+  if (!quiet) std::fputs(left_out.c_str(), stderr);
   return names;
 }
 
@@ -199,8 +223,10 @@ CLI::App* add_work_precision_command(CLI::App& app, WorkPrecisionCommandOptions&
   cmd->add_option("--methods", o.methods,
                   "The time-steppers, comma-separated, each with its default parameters (the "
                   "scene's [method] table is not used): " +
-                      swept_method_names() + ", e.g. --methods direct,moreau_jean")
-      ->capture_default_str();
+                      swept_method_names() +
+                      ", e.g. --methods direct,moreau_jean (default: " + kDefaultMethods +
+                      ", those of them that can run the scene; standard error names the others "
+                      "and why)");
   cmd->add_option("--h", o.steps,
                   "The steps h, as impact sweep's --vary SPEC: a:b:n, a:b:n:log or v1,v2,..., "
                   "each in (0, T], at least 2 different ones, e.g. --h 1e-2:1e-5:10:log "
@@ -256,7 +282,8 @@ int run_work_precision_command(const WorkPrecisionCommandOptions& o) {
   const auto start = Clock::now();
   const Run loaded = load_run(o.scene, o.sets, {});
   const Scene& scene = loaded.scene;
-  const std::vector<std::string> names = parse_methods(o.methods, scene.model);
+  const std::vector<std::string> names = o.methods.empty() ? default_methods(scene.model, o.quiet)
+                                                           : parse_methods(o.methods, scene.model);
   const std::vector<double> steps = parse_steps(o.steps, scene.T);
   // Each method runs every h --repeat times and once more against the reference: a step count
   // past what a run can do in hours is most likely a mistyped h.

@@ -13,11 +13,14 @@
 
 namespace impact::cli {
 
+// The methods swept when --methods is not given, less those that cannot run the scene.
+constexpr const char* kDefaultMethods = "direct,moreau_jean,fb_newton";
+
 struct WorkPrecisionCommandOptions {
   std::vector<std::string> arguments;  // the command line, for the provenance sidecar
   std::string scene;
   std::vector<std::string> sets;
-  std::string methods = "direct,moreau_jean,fb_newton";
+  std::string methods;  // empty: those of kDefaultMethods that can run the scene
   std::string steps;    // --h SPEC; empty: the experiment's 0.1 .. 1e-5
   std::string against;  // empty: the scene's reference
   int repeat = 5;

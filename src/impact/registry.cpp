@@ -92,12 +92,21 @@ std::vector<std::string_view> methods_with(bool Capabilities::*capability) {
   return names;
 }
 
-bool honours(const MethodInfo& method, const Model& model) {
+std::string not_honoured(const MethodInfo& method, const Model& model) {
   const bool harmonic = model.harmonic && model.harmonic->amplitude != 0.0;
-  return (!model.cor || method.can.restitution) && (!harmonic || method.can.harmonic_force) &&
-         (model.expression.empty() || method.can.time_expression) &&
-         (method.can.state_force || !state_force(model)) &&
-         (method.can.internal_variables || model.internal.empty());
+  if (model.cor && !method.can.restitution) return "it has no restitution law for floor.cor";
+  if (harmonic && !method.can.harmonic_force) return "it takes no harmonic force (force.amplitude)";
+  if (!model.expression.empty() && !method.can.time_expression)
+    return "it takes no force expression (force.expression)";
+  if (!method.can.state_force && state_force(model))
+    return "it takes a force of t only, and force.expression reads u or v";
+  if (!method.can.internal_variables && !model.internal.empty())
+    return "it does not follow internal variables ([[internal]])";
+  return {};
+}
+
+bool honours(const MethodInfo& method, const Model& model) {
+  return not_honoured(method, model).empty();
 }
 
 const MethodInfo& reference_for(const Model& model) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <span>
+#include <string>
 #include <string_view>
 #include <variant>
 #include <vector>
@@ -74,6 +75,9 @@ std::vector<std::string_view> methods_with(bool Capabilities::*capability);
 // Whether `method` honours what `model` states (a COR, a harmonic part, an expression, one that
 // reads the state, internal variables).
 bool honours(const MethodInfo& method, const Model& model);
+// Why `method` does not honour `model`, its first feature the method lacks ("it takes a force of
+// t only, and force.expression reads u or v"); empty when it honours it.
+std::string not_honoured(const MethodInfo& method, const Model& model);
 // The reference for a model: the first method with `reference` that honours it (exact for a
 // constant or harmonic force, event_driven for an expression, of t or of the state).
 const MethodInfo& reference_for(const Model& model);
