@@ -84,9 +84,8 @@ TEST_CASE("capabilities: the table", "[capabilities]") {
   // Restitution, Harmonic force, Expression of t, force of the State, Linear force, internal
   // Variables, Iterations channel, reFerence, energy Bound, exact eVents.
   const std::vector<std::pair<std::string, std::string>> rows = {
-      {"direct", "RHESLZ--B-"},         {"fb_newton", "RHE---I-B-"},
-      {"moreau_jean", "RHESLZ----"},    {"penalty", "-HE---I---"},
-      {"exact", "RH--L--FBV"},          {"event_driven", "RHESLZ-F-V"},
+      {"direct", "RHESLZ--B-"},         {"fb_newton", "RHE---I-B-"}, {"moreau_jean", "RHESLZ----"},
+      {"penalty", "-HE---I---"},        {"exact", "RH--L--FBV"},     {"event_driven", "RHESLZ-F-V"},
       {"direct_located", "RHE-------"},
   };
   const auto row = [](const impact::Capabilities& c) {

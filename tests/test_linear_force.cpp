@@ -31,7 +31,7 @@ struct MethodRun {
 };
 
 MethodRun run_method(const Model& model, const State& initial, double T, double h,
-               const MethodParams& method) {
+                     const MethodParams& method) {
   const Scene scene = make_scene(model, initial, T, h, method);
   AnyStepper stepper = make_stepper(scene);
   MethodRun run;
@@ -69,13 +69,13 @@ TEST_CASE(
     model.phi = in(-0.2, 0.2);
     model.f = in(-2, 0.5);
     model.linear = LinearSpring{in(0.3, 4), i % 2 ? in(0.05, 1.0) : 0.0, in(-0.5, 0.5)};
-    if (i % 5 != 4) model.harmonic = Harmonic{in(-1.5, 1.5), in(0.5, 4), in(0, 2 * std::numbers::pi)};
+    if (i % 5 != 4)
+      model.harmonic = Harmonic{in(-1.5, 1.5), in(0.5, 4), in(0, 2 * std::numbers::pi)};
     model.cor = in(0.5, 0.95);
     const State initial{model.phi + in(0.1, 1.5), in(-1, 1)};
     const double T = 8.0, h = 0.01;
-    INFO("scene " << i << ": " << linear_as_expression(model).expression << ", phi = "
-                  << model.phi << ", COR " << *model.cor << ", u0 = " << initial.u
-                  << ", v0 = " << initial.v);
+    INFO("scene " << i << ": " << linear_as_expression(model).expression << ", phi = " << model.phi
+                  << ", COR " << *model.cor << ", u0 = " << initial.u << ", v0 = " << initial.v);
     const MethodRun a = run_method(model, initial, T, h, ExactParams{});
     const MethodRun b = run_method(model, initial, T, h, EventDrivenParams{});
     // Every event up to the first stick: a chatter is cut off under a window each certifies in

@@ -63,10 +63,9 @@ const std::vector<Feature> kFeatures = {
              "[output]\nchannels = [\"u\", \"v\", \"N\", \"E\", \"beta\", \"D\"]\n"
              "[[internal]]\nname = \"beta\"\ninitial = 1.0\nrate = \"-2 * beta + u\"\n"
              "[[internal]]\nname = \"D\"\ninitial = 0.0\nrate = \"v^2\"\n"},
-    {"linear force",
-     kHead + "[force]\nf = -9.81\namplitude = 5.0\nomega = 20.0\n"
-             "linear = { k = 20.0, c = 0.5, u_eq = 0.3 }\n[floor]\ncor = 0.8\n"
-             "[output]\nchannels = [\"u\", \"v\", \"N\", \"E\"]\n"},
+    {"linear force", kHead + "[force]\nf = -9.81\namplitude = 5.0\nomega = 20.0\n"
+                             "linear = { k = 20.0, c = 0.5, u_eq = 0.3 }\n[floor]\ncor = 0.8\n"
+                             "[output]\nchannels = [\"u\", \"v\", \"N\", \"E\"]\n"},
     // The two-mass chain is a library model: no scene key gives it, so every surface that reads a
     // scene refuses one that asks for it.
     {"the chain", kHead + "[chain]\nm1 = 1.0\n"},

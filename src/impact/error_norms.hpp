@@ -14,8 +14,8 @@
 #include "impact/contact.hpp"
 #include "impact/event_track.hpp"
 #include "impact/exact.hpp"
-#include "impact/linear_law.hpp"
 #include "impact/format.hpp"
+#include "impact/linear_law.hpp"
 #include "impact/model.hpp"
 #include "impact/ode_flight.hpp"
 #include "impact/run.hpp"
@@ -37,11 +37,11 @@ struct ErrorNorms {
 };
 
 // The exact solution at the grid times, in increasing order, for any force: ExactSolution's closed
-// form for a constant one, EventTrack for a harmonic one, LinearTrack for a linear one and the method event_driven's ODE track
-// (default tolerances, f evaluated up to `end` only); impact_time(1) of a time-dependent force is
-// known once the samples have passed it. The closed form is sampled flight by flight (the flight
-// that held the last sample is kept while the samples stay in it: a polynomial per sample, bit for
-// bit at()).
+// form for a constant one, EventTrack for a harmonic one, LinearTrack for a linear one and the
+// method event_driven's ODE track (default tolerances, f evaluated up to `end` only);
+// impact_time(1) of a time-dependent force is known once the samples have passed it. The closed
+// form is sampled flight by flight (the flight that held the last sample is kept while the samples
+// stay in it: a polynomial per sample, bit for bit at()).
 class ReferenceSolution {
  public:
   // With internal variables: event_driven's track, z from their initial values (model.hpp).

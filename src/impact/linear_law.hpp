@@ -38,7 +38,7 @@ class LinearLaw {
     return search_linear_contact(flight_, gap_, certified_, checked_, horizon, budget);
   }
   State at(double t) const {
-    const Motion m = flight_.relative(t);
+    const FlightMotion m = flight_.relative(t);
     return {gap_ + m.u, m.v};
   }
   double certified() const { return certified_; }

@@ -36,9 +36,9 @@ struct Harmonic {
 };
 
 // The linear part of a force of the state, -k (u - u_eq) - c v (the impact oscillator's spring and
-// damper): beside it the constant part f and the harmonic part of the force, so that the whole force
-// is f - k (u - u_eq) - c v + amplitude sin(omega t + phase). The method exact follows it in closed
-// form (linear_flight.hpp), the others as the force of the state it is (force.hpp).
+// damper): beside it the constant part f and the harmonic part of the force, so that the whole
+// force is f - k (u - u_eq) - c v + amplitude sin(omega t + phase). The method exact follows it in
+// closed form (linear_flight.hpp), the others as the force of the state it is (force.hpp).
 struct LinearSpring {
   double k = 0.0;     // spring constant (per unit time squared); < 0: an inverted spring
   double c = 0.0;     // damping (per unit time)
@@ -68,7 +68,8 @@ struct Model {
   std::optional<double> cor{};         // COR = -v_after / v_before, in [0, 1]
   std::optional<Harmonic> harmonic{};  // the harmonic part of the body force, if any
   std::string expression{};            // muparser, of t (and u, v, z) added to it; empty: none
-  std::optional<LinearSpring> linear{};  // -k (u - u_eq) - c v added to it (not with expression)
+  // -k (u - u_eq) - c v added to it (LinearSpring); not with an expression
+  std::optional<LinearSpring> linear{};
   std::vector<InternalVariable> internal{};  // at most kMaxInternal; empty for the paper's model
 };
 

@@ -32,9 +32,7 @@ KeyValue linear_value(const Scene& s, double LinearSpring::*member) {
   return s.model.linear ? KeyValue(*s.model.linear.*member) : KeyValue();
 }
 
-constexpr std::string_view kLinearAlso =
-    "any finite number; not with force.expression; methods exact, and as a force of the state "
-    "direct, moreau_jean, event_driven";
+constexpr std::string_view kLinearAlso = "not with force.expression";
 
 const KeySpec kForceKeys[] = {
     {.table = "force",

@@ -27,7 +27,7 @@ std::span<const std::string_view> channel_names() {
 constexpr Range kPositive{.lo = 0.0, .lo_open = true};
 
 const TableSpec kTables[] = {
-    {"initial", true}, {"floor", false},  {"force", false}, {"force.linear", false},
+    {"initial", true}, {"floor", false}, {"force", false},  {"force.linear", false},
     {"time", true},    {"method", true}, {"output", false},
 };
 
