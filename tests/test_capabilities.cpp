@@ -36,6 +36,9 @@ const std::vector<Feature> kFeatures = {
     {"a force of the state", &impact::Capabilities::state_force,
      "--unset force.f --set 'force.expression=\"-9.80665 - 100 * (u - 0.05) - v\"'",
      "--unset force.f --set 'force.expression=\"-9.80665\"'", "force.expression"},
+    {"a linear force", &impact::Capabilities::linear_force,
+     "--set force.linear.k=100 --set force.linear.u_eq=0.05 --set force.linear.c=1", "",
+     "force.linear"},
     {"the iterations channel", &impact::Capabilities::iterations_channel,
      "--set 'output.channels=[\"u\",\"v\",\"iterations\"]'", "", "output.channels"},
     // An internal variable the force reads (a decaying pull, z = e^-t from 1): [[internal]] has no
@@ -78,12 +81,12 @@ TEST_CASE("capabilities: every method honours or refuses every feature, as its t
 }
 
 TEST_CASE("capabilities: the table", "[capabilities]") {
-  // Restitution, Harmonic force, Expression of t, force of the State, internal Variables,
-  // Iterations channel, reFerence, energy Bound, exact eVents.
+  // Restitution, Harmonic force, Expression of t, force of the State, Linear force, internal
+  // Variables, Iterations channel, reFerence, energy Bound, exact eVents.
   const std::vector<std::pair<std::string, std::string>> rows = {
-      {"direct", "RHESZ--B-"},         {"fb_newton", "RHE--I-B-"}, {"moreau_jean", "RHESZ----"},
-      {"penalty", "-HE--I---"},        {"exact", "RH----FBV"},     {"event_driven", "RHESZ-F-V"},
-      {"direct_located", "RHE------"},
+      {"direct", "RHESLZ--B-"},         {"fb_newton", "RHE---I-B-"}, {"moreau_jean", "RHESLZ----"},
+      {"penalty", "-HE---I---"},        {"exact", "RH--L--FBV"},     {"event_driven", "RHESLZ-F-V"},
+      {"direct_located", "RHE-------"},
   };
   const auto row = [](const impact::Capabilities& c) {
     std::string r;
@@ -91,6 +94,7 @@ TEST_CASE("capabilities: the table", "[capabilities]") {
     r += c.harmonic_force ? 'H' : '-';
     r += c.time_expression ? 'E' : '-';
     r += c.state_force ? 'S' : '-';
+    r += c.linear_force ? 'L' : '-';
     r += c.internal_variables ? 'Z' : '-';
     r += c.iterations_channel ? 'I' : '-';
     r += c.reference ? 'F' : '-';
@@ -113,4 +117,7 @@ TEST_CASE("capabilities: the table", "[capabilities]") {
   impact::Model internal;
   internal.internal = {{"z", 1.0, "-z"}};
   CHECK(impact::reference_for(internal).name == "event_driven");
+  impact::Model linear;
+  linear.linear = impact::LinearSpring{1.0, 0.1, 0.0};
+  CHECK(impact::reference_for(linear).name == "exact");
 }

@@ -16,9 +16,9 @@
 #include "impact/linear_flight.hpp"
 
 using impact::AccelerationBound;
+using impact::FlightMotion;
 using impact::LinearFlight;
 using impact::LinearForce;
-using impact::Motion;
 
 namespace {
 
@@ -30,14 +30,14 @@ int rhs(double t, const double y[], double dydt[], void* params) {
 }
 
 // rk8pd from (t_a, u_a, v_a) to each of `times`, tolerances 1e-14.
-std::vector<Motion> rk8pd(const LinearForce& force, double t_a, double u_a, double v_a,
-                          const std::vector<double>& times) {
+std::vector<FlightMotion> rk8pd(const LinearForce& force, double t_a, double u_a, double v_a,
+                                const std::vector<double>& times) {
   LinearForce f = force;
   gsl_odeiv2_system sys{rhs, nullptr, 2, &f};
   gsl_odeiv2_driver* driver =
       gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, 1e-4, 1e-14, 1e-14);
   double t = t_a, y[2] = {u_a, v_a};
-  std::vector<Motion> out;
+  std::vector<FlightMotion> out;
   for (double target : times) {
     REQUIRE(gsl_odeiv2_driver_apply(driver, &t, target, y) == GSL_SUCCESS);
     out.push_back({y[0], y[1], f.at(t, y[0], y[1])});
@@ -111,9 +111,9 @@ TEST_CASE("linear flight: the closed form equals rk8pd at tolerance 1e-14 on 39 
     times.clear();
     // Short times (the Taylor regime) and long ones (the others), up to 5 time units.
     for (double s : {1e-6, 1e-3, 0.05, 0.3, 0.7, 1.3, 2.0, 3.1, 4.2, 5.0}) times.push_back(t_a + s);
-    const std::vector<Motion> reference = rk8pd(kind.force, t_a, u_a, v_a, times);
+    const std::vector<FlightMotion> reference = rk8pd(kind.force, t_a, u_a, v_a, times);
     for (std::size_t i = 0; i < times.size(); ++i) {
-      const Motion m = flight.at(times[i]), r = reference[i];
+      const FlightMotion m = flight.at(times[i]), r = reference[i];
       INFO(kind.name << " (k = " << kind.force.k << ", c = " << kind.force.c
                      << ", omega = " << kind.force.omega << ", Duhamel form: " << flight.duhamel()
                      << "), t - t_a = " << times[i] - t_a);

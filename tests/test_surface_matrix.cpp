@@ -31,7 +31,7 @@ std::uint64_t same_bits_of(double x) {
 // A new capability is a new column of the capability table (registry.hpp): a feature a scene can
 // ask for, or a property of a method. Either way it needs a row here (kFeatures) or a word in
 // kNotFeatures.
-static_assert(sizeof(Capabilities) == 10,
+static_assert(sizeof(Capabilities) == 11,
               "a capability was added or removed: give it a row in kFeatures of "
               "test_surface_matrix.cpp (or say in kNotFeatures why it is none)");
 [[maybe_unused]] constexpr const char* kNotFeatures =
@@ -63,6 +63,9 @@ const std::vector<Feature> kFeatures = {
              "[output]\nchannels = [\"u\", \"v\", \"N\", \"E\", \"beta\", \"D\"]\n"
              "[[internal]]\nname = \"beta\"\ninitial = 1.0\nrate = \"-2 * beta + u\"\n"
              "[[internal]]\nname = \"D\"\ninitial = 0.0\nrate = \"v^2\"\n"},
+    {"linear force", kHead + "[force]\nf = -9.81\namplitude = 5.0\nomega = 20.0\n"
+                             "linear = { k = 20.0, c = 0.5, u_eq = 0.3 }\n[floor]\ncor = 0.8\n"
+                             "[output]\nchannels = [\"u\", \"v\", \"N\", \"E\"]\n"},
     // The two-mass chain is a library model: no scene key gives it, so every surface that reads a
     // scene refuses one that asks for it.
     {"the chain", kHead + "[chain]\nm1 = 1.0\n"},

@@ -15,6 +15,7 @@
 #include "impact/event_track.hpp"
 #include "impact/exact.hpp"
 #include "impact/format.hpp"
+#include "impact/linear_law.hpp"
 #include "impact/model.hpp"
 #include "impact/ode_flight.hpp"
 #include "impact/run.hpp"
@@ -36,11 +37,11 @@ struct ErrorNorms {
 };
 
 // The exact solution at the grid times, in increasing order, for any force: ExactSolution's closed
-// form for a constant one, EventTrack for a harmonic one and the method event_driven's ODE track
-// (default tolerances, f evaluated up to `end` only); impact_time(1) of a time-dependent force is
-// known once the samples have passed it. The closed form is sampled flight by flight (the flight
-// that held the last sample is kept while the samples stay in it: a polynomial per sample, bit for
-// bit at()).
+// form for a constant one, EventTrack for a harmonic one, LinearTrack for a linear one and the
+// method event_driven's ODE track (default tolerances, f evaluated up to `end` only);
+// impact_time(1) of a time-dependent force is known once the samples have passed it. The closed
+// form is sampled flight by flight (the flight that held the last sample is kept while the samples
+// stay in it: a polynomial per sample, bit for bit at()).
 class ReferenceSolution {
  public:
   // With internal variables: event_driven's track, z from their initial values (model.hpp).
@@ -49,6 +50,8 @@ class ReferenceSolution {
       OdeLaw law(model, OdeSettings{.end = end});
       law.set_internal(with_internal(model, initial).z);
       ode_track_.emplace(std::move(law), model, initial, 0.0);
+    } else if (model.linear) {
+      linear_.emplace(linear_track(model, initial, 0.0));
     } else if (constant_force(model)) {
       closed_form_.emplace(model, initial);
     } else if (model.expression.empty()) {
@@ -64,6 +67,7 @@ class ReferenceSolution {
         impact_energy_ += 0.5 * e.v_after * e.v_after - 0.5 * e.v_before * e.v_before;
     };
     if (track_) track_->set_event_sink(sink);
+    if (linear_) linear_->set_event_sink(sink);
     if (ode_track_) ode_track_->set_event_sink(sink);
   }
   ReferenceSolution(const ReferenceSolution&) = delete;  // the sink points to this one
@@ -76,6 +80,7 @@ class ReferenceSolution {
     }
     if (!(t > 0)) return initial_;  // an impact at 0+ shows from the first step on (exact.hpp)
     double impulse = 0;
+    if (linear_) return linear_->advance(t, impulse);
     return track_ ? track_->advance(t, impulse) : ode_track_->advance(t, impulse);
   }
   // The internal variables at the t of the last at(t) (with internal variables).
@@ -87,6 +92,7 @@ class ReferenceSolution {
   double impact_energy() const { return impact_energy_; }
   std::optional<double> first_impact() const {
     if (closed_form_) return closed_form_->impact_time(1);
+    if (linear_) return linear_->first_impact();
     return track_ ? track_->first_impact() : ode_track_->first_impact();
   }
 
@@ -96,6 +102,7 @@ class ReferenceSolution {
   ExactSolution::Flight flight_;
   double rest_ = 0;
   std::optional<EventTrack> track_;
+  std::optional<LinearTrack> linear_;  // a linear force of the state (linear_law.hpp)
   std::optional<EventTrackOf<OdeLaw>> ode_track_;
   double impact_energy_ = 0;
 };

@@ -276,7 +276,10 @@ void ExactStepper::initialize(const State& s, std::int64_t l) {
   l0_ = l;
   rotation_l_ = -1;
   flight_ = {};
-  if (model_.harmonic && model_.harmonic->amplitude != 0.0) {
+  if (model_.linear) {
+    linear_.emplace(linear_track(model_, s, static_cast<double>(l) * h_));
+    linear_->set_event_sink(sink_);
+  } else if (model_.harmonic && model_.harmonic->amplitude != 0.0) {
     track_.emplace(model_, s, static_cast<double>(l) * h_);
     track_->set_event_sink(sink_);
   } else {
@@ -291,6 +294,7 @@ void ExactStepper::initialize(const State& s, std::int64_t l) {
 void ExactStepper::set_event_sink(EventSink sink) {
   sink_ = std::move(sink);
   if (track_) track_->set_event_sink(sink_);
+  if (linear_) linear_->set_event_sink(sink_);
 }
 
 StepInfo ExactStepper::closed_form_step(State& s, double t0, double t1) {
@@ -350,7 +354,20 @@ StepInfo ExactStepper::harmonic_step(State& s, std::int64_t l) {
   return info;
 }
 
+// A linear force's flights are sampled through the track at every step (a closed form per sample).
+StepInfo ExactStepper::linear_step(State& s, std::int64_t l) {
+  StepInfo info;
+  double impulse = 0.0;
+  event_limit_ = run_budget(max_events_, l + 1 - l0_);
+  linear_->set_event_limit(event_limit_);
+  s = linear_->advance(static_cast<double>(l + 1) * h_, impulse);
+  info.contact_force = impulse / h_;
+  info.converged = linear_->converged();
+  return info;
+}
+
 std::string ExactStepper::failure_reason() const {
+  if (linear_) return describe_stop(linear_->stop(), {}, max_events_, event_limit_);
   if (!track_) return {};
   return describe_stop(track_->stop(), {}, max_events_, event_limit_);
 }

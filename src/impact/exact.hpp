@@ -34,6 +34,7 @@
 #include <string>
 
 #include "impact/event_track.hpp"
+#include "impact/linear_law.hpp"
 #include "impact/model.hpp"
 
 namespace impact {
@@ -89,8 +90,9 @@ struct ExactParams {
 // The exact solution as a stepper: sampled at the grid times after the state it was initialized
 // with, so that it runs wherever a time-stepper does. A constant force uses ExactSolution in closed
 // form (time measured from the initial grid time); a harmonic one the event-driven EventTrack
-// (absolute time t = l h, which the force depends on). An expression force is refused: its
-// reference is the method event_driven.
+// (absolute time t = l h, which the force depends on); a linear force of the state (Model::linear)
+// the event-driven LinearTrack (linear_law.hpp), its flights in closed form. An expression force is
+// refused: its reference is the method event_driven.
 // Sampling a grid in order costs a polynomial per sample inside one flight: the flight found for
 // the previous sample is reused while the samples stay in it, and for a harmonic force sin and cos
 // of omega t_l + phase advance by one rotation per step, recomputed exactly every
@@ -109,6 +111,7 @@ class ExactStepper {
 
   // Samples the solution at t_{l+1}; N^l = impulse in (t_l, t_{l+1}] / h.
   StepInfo do_step(State& s, std::int64_t l) {
+    if (linear_) return linear_step(s, l);
     if (track_) return harmonic_step(s, l);
     const double t0 = static_cast<double>(l - l0_) * h_, t1 = static_cast<double>(l + 1 - l0_) * h_;
     if (t0 >= flight_.begin && t1 < flight_.end) {
@@ -136,6 +139,7 @@ class ExactStepper {
  private:
   StepInfo closed_form_step(State& s, double t0, double t1);
   StepInfo harmonic_step(State& s, std::int64_t l);
+  StepInfo linear_step(State& s, std::int64_t l);
   void emit_closed_form_events(double t0, double t1) const;
 
   Model model_;
@@ -145,6 +149,7 @@ class ExactStepper {
   ExactSolution::Flight flight_;
   double rest_begin_ = std::numeric_limits<double>::infinity(), rest_force_ = 0;
   std::optional<EventTrack> track_;
+  std::optional<LinearTrack> linear_;
   EventSink sink_;
   std::int64_t l0_ = 0;
   // sin and cos of omega t_l + phase for l = rotation_l_, and of omega h.

@@ -126,9 +126,10 @@ struct ForceFunction::Expression {
   mu::Parser parser;
 };
 
-ForceFunction::ForceFunction(const Model& model) : model_(model), harmonic_(model.harmonic) {
-  if (!model.expression.empty()) {
-    expression_ = std::make_unique<Expression>(model.expression, model);
+ForceFunction::ForceFunction(const Model& model)
+    : model_(linear_as_expression(model)), harmonic_(model_.harmonic) {
+  if (!model_.expression.empty()) {
+    expression_ = std::make_unique<Expression>(model_.expression, model_);
     state_dependent_ = expression_->state;
   }
 }
@@ -237,7 +238,31 @@ void ForceFunction::set_internal(const std::array<double, kMaxInternal>& z) cons
   if (expression_) expression_->z = z;
 }
 
+Model linear_as_expression(const Model& model) {
+  if (!model.linear) return model;
+  // A number as the expression reads it back: parenthesized, so that a sign is no operator.
+  const auto number = [](double x) { return "(" + round_trip(x) + ")"; };
+  const LinearSpring& spring = *model.linear;
+  std::string text = number(model.f);
+  if (spring.k != 0.0) text += " - " + number(spring.k) + " * (u - " + number(spring.u_eq) + ")";
+  if (spring.c != 0.0) text += " - " + number(spring.c) + " * v";
+  if (model.harmonic && model.harmonic->amplitude != 0.0) {
+    const Harmonic& w = *model.harmonic;
+    text += " + " + number(w.amplitude) + " * sin(" + number(w.omega) + " * t + " +
+            number(w.phase) + ")";
+  }
+  // u and v named even where k = c = 0, so that the force stays one of the state for every method.
+  if (spring.k == 0.0 && spring.c == 0.0) text += " + 0 * u";
+  Model expression = model;
+  expression.f = 0.0;
+  expression.harmonic.reset();
+  expression.linear.reset();
+  expression.expression = text;
+  return expression;
+}
+
 bool state_force(const Model& model) {
+  if (model.linear) return true;
   if (model.expression.empty()) return false;
   try {
     mu::Parser parser;

@@ -10,6 +10,10 @@
 // the schemes (scheme_flight.hpp). The forms without a state refuse it (std::logic_error), so that
 // no solver reads a force of the state as one of t alone.
 //
+// A linear force (Model::linear) is a force of the state too: a ForceFunction reads it as the
+// expression linear_as_expression() writes, so that every method that takes a force of the state
+// takes it (exact alone follows it in closed form, linear_law.hpp).
+//
 // Internal variables (model.hpp). An expression may also read the model's internal variables by
 // their names; that too makes it a force of the state. Their values are the ForceFunction's own,
 // set by the stepper that follows them (set_internal) before it evaluates f: a ForceFunction
@@ -83,8 +87,15 @@ class ForceFunction {
   bool state_dependent_ = false;
 };
 
-// Whether a model's expression reads u, v or an internal variable (false for none, or for one that
-// does not parse: the scene reader refuses that with its own message).
+// The model with its linear part (Model::linear), its constant part f and its harmonic part
+// written as the one expression of the state they make, f - k * (u - u_eq) - c * v + amplitude *
+// sin(omega * t + phase), each number with the digits that read back to it (a term that is zero
+// left out); the model itself when it has no linear part.
+Model linear_as_expression(const Model& model);
+
+// Whether a model's force reads u, v or an internal variable: a linear part, or an expression that
+// does (false for none, or for one that does not parse: the scene reader refuses that with its own
+// message).
 bool state_force(const Model& model);
 
 }  // namespace impact

@@ -188,7 +188,7 @@ void LinearFlight::harmonic_response(double tau, const Fundamental& fs, double s
   dr = force_.amplitude * (w * rotated.real() + fs.p2 * sin_a_);
 }
 
-Motion LinearFlight::relative(double t) const {
+FlightMotion LinearFlight::relative(double t) const {
   const double tau = t - t_a_;
   const Fundamental fs = fundamental(tau);
   double r = fs.r, dr = fs.dr, forcing = 0.0;
@@ -212,7 +212,7 @@ double LinearFlight::window() const {
 
 AccelerationBound LinearFlight::acceleration_bound(double t) const {
   const LinearForce& f = force_;
-  const Motion m = at(t);
+  const FlightMotion m = at(t);
   const double a = std::fabs(f.amplitude);
   if (f.k >= 0.0 && f.c >= 0.0 && !duhamel_) {
     double yp = 0.0, dyp = 0.0, steady_bound = 0.0;

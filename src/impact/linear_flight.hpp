@@ -64,7 +64,7 @@ struct LinearForce {
 };
 
 // Position, velocity and acceleration of a flight at one time.
-struct Motion {
+struct FlightMotion {
   double u = 0.0;
   double v = 0.0;
   double a = 0.0;
@@ -89,16 +89,16 @@ class LinearFlight {
   // Throws std::invalid_argument for non-finite data or a harmonic term without omega > 0.
   LinearFlight(const LinearForce& force, double t_a, double u_a, double v_a);
 
-  Motion at(double t) const {
-    Motion m = relative(t);
+  FlightMotion at(double t) const {
+    FlightMotion m = relative(t);
     m.u += u_a_;
     return m;
   }
   // The same with u - u_a in place of u: the displacement since the anchor, accurate relative to
   // itself on a short flight (the gap of a bounce of height 1e-20 on a floor at 0.5).
-  Motion relative(double t) const;
+  FlightMotion relative(double t) const;
   State state(double t) const {
-    const Motion m = at(t);
+    const FlightMotion m = at(t);
     return {m.u, m.v};
   }
   double start() const { return t_a_; }
@@ -149,7 +149,7 @@ struct LinearGap {
   const LinearFlight* flight = nullptr;
   double gap_a = 0.0;
   State at(double t) const {
-    const Motion m = flight->relative(t);
+    const FlightMotion m = flight->relative(t);
     return {gap_a + m.u, m.v};
   }
   double force(double t) const { return flight->relative(t).a; }

@@ -35,6 +35,16 @@ struct Harmonic {
   }
 };
 
+// The linear part of a force of the state, -k (u - u_eq) - c v (the impact oscillator's spring and
+// damper): beside it the constant part f and the harmonic part of the force, so that the whole
+// force is f - k (u - u_eq) - c v + amplitude sin(omega t + phase). The method exact follows it in
+// closed form (linear_flight.hpp), the others as the force of the state it is (force.hpp).
+struct LinearSpring {
+  double k = 0.0;     // spring constant (per unit time squared); < 0: an inverted spring
+  double c = 0.0;     // damping (per unit time)
+  double u_eq = 0.0;  // the spring's rest position
+};
+
 // An internal variable z of the system, z' = g(t, u, v, z) (a damage, a bond fraction, a memory
 // of the motion): its name, as the force expression, the rates and the output read it, its value
 // at t = 0 and its rate g, a muparser expression of t, u, v and the internal variables. It is
@@ -58,12 +68,14 @@ struct Model {
   std::optional<double> cor{};         // COR = -v_after / v_before, in [0, 1]
   std::optional<Harmonic> harmonic{};  // the harmonic part of the body force, if any
   std::string expression{};            // muparser, of t (and u, v, z) added to it; empty: none
+  // -k (u - u_eq) - c v added to it (LinearSpring); not with an expression
+  std::optional<LinearSpring> linear{};
   std::vector<InternalVariable> internal{};  // at most kMaxInternal; empty for the paper's model
 };
 
 // f(t) = f: the case of the paper's Section 5 and of every closed form in this package.
 inline bool constant_force(const Model& model) {
-  return !model.harmonic && model.expression.empty();
+  return !model.harmonic && model.expression.empty() && !model.linear;
 }
 
 // The particle's state with the model's internal variables z_1..z_m (m = model.internal.size(),

@@ -18,6 +18,7 @@ const MethodInfo kMethods[] = {
              .harmonic_force = true,
              .time_expression = true,
              .state_force = true,
+             .linear_force = true,
              .internal_variables = true,
              .scheme_force_channel = true,
              .energy_bound = true}},
@@ -37,6 +38,7 @@ const MethodInfo kMethods[] = {
              .harmonic_force = true,
              .time_expression = true,
              .state_force = true,
+             .linear_force = true,
              .internal_variables = true}},
     // Compliance has no impact law to apply a COR to: it refuses one rather than run elastic.
     {.name = "penalty",
@@ -48,6 +50,7 @@ const MethodInfo kMethods[] = {
      .defaults = ExactParams{},
      .can = {.restitution = true,
              .harmonic_force = true,
+             .linear_force = true,
              .reference = true,
              .energy_bound = true,
              .exact_events = true}},
@@ -58,6 +61,7 @@ const MethodInfo kMethods[] = {
              .harmonic_force = true,
              .time_expression = true,
              .state_force = true,
+             .linear_force = true,
              .internal_variables = true,
              .reference = true,
              .exact_events = true}},
@@ -92,14 +96,25 @@ std::vector<std::string_view> methods_with(bool Capabilities::*capability) {
   return names;
 }
 
+namespace {
+
+// An expression that reads u, v or an internal variable (a linear part is its own capability).
+bool expression_of_state(const Model& model) {
+  return !model.expression.empty() && state_force(model);
+}
+
+}  // namespace
+
 std::string not_honoured(const MethodInfo& method, const Model& model) {
   const bool harmonic = model.harmonic && model.harmonic->amplitude != 0.0;
   if (model.cor && !method.can.restitution) return "it has no restitution law for floor.cor";
   if (harmonic && !method.can.harmonic_force) return "it takes no harmonic force (force.amplitude)";
   if (!model.expression.empty() && !method.can.time_expression)
     return "it takes no force expression (force.expression)";
-  if (!method.can.state_force && state_force(model))
+  if (!method.can.state_force && expression_of_state(model))
     return "it takes a force of t only, and force.expression reads u or v";
+  if (!method.can.linear_force && model.linear)
+    return "it takes no linear force of the state (force.linear)";
   if (!method.can.internal_variables && !model.internal.empty())
     return "it does not follow internal variables ([[internal]])";
   return {};
@@ -115,14 +130,21 @@ const MethodInfo& reference_for(const Model& model) {
   throw std::logic_error("no reference method honours this model");
 }
 
-AnyStepper make_stepper(const Model& model, double h, const MethodParams& params) {
+AnyStepper make_stepper(const Model& given, double h, const MethodParams& params) {
   const MethodInfo& method = method_info(params);
-  if (model.cor && !method.can.restitution)
+  if (given.cor && !method.can.restitution)
     throw std::invalid_argument("method '" + std::string(method.name) +
                                 "' has no restitution law: it cannot take a COR");
-  if (!method.can.state_force && state_force(model))
+  if (!method.can.state_force && expression_of_state(given))
     throw std::invalid_argument("method '" + std::string(method.name) +
                                 "' takes a force of t only: force.expression reads u or v");
+  if (!method.can.linear_force && given.linear)
+    throw std::invalid_argument("method '" + std::string(method.name) +
+                                "' takes no force of the state: force.linear is given");
+  // exact follows a linear force in closed form; the others take it as the force of the state it
+  // is, an expression (force.hpp).
+  const Model model =
+      std::holds_alternative<ExactParams>(params) ? given : linear_as_expression(given);
   if (!method.can.internal_variables && !model.internal.empty())
     throw std::invalid_argument("method '" + std::string(method.name) +
                                 "' does not follow internal variables: [[internal]] is given");

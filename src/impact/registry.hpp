@@ -52,6 +52,7 @@ struct Capabilities {
   bool harmonic_force = false;      // force.amplitude/omega/phase
   bool time_expression = false;     // force.expression (a function of t)
   bool state_force = false;         // force.expression reads u or v: f(t, u, v)
+  bool linear_force = false;        // force.linear: -k (u - u_eq) - c v beside f
   bool internal_variables = false;  // [[internal]]: z' = g(t, u, v, z), read by the force
   bool iterations_channel = false;  // output.channels "iterations": Newton iterations, ODE steps
   // output.channels "N_scheme": the paper's scheme solves (4-3) for N^l, which Newton's law does

@@ -22,6 +22,18 @@ KeyValue harmonic_value(const Scene& s, double Harmonic::*member) {
   return s.model.harmonic ? KeyValue(*s.model.harmonic.*member) : KeyValue();
 }
 
+// The linear part, created by each of its keys as the harmonic part is.
+LinearSpring& linear(Scene& s) {
+  if (!s.model.linear) s.model.linear.emplace();
+  return *s.model.linear;
+}
+
+KeyValue linear_value(const Scene& s, double LinearSpring::*member) {
+  return s.model.linear ? KeyValue(*s.model.linear.*member) : KeyValue();
+}
+
+constexpr std::string_view kLinearAlso = "not with force.expression";
+
 const KeySpec kForceKeys[] = {
     {.table = "force",
      .key = "f",
@@ -55,8 +67,8 @@ const KeySpec kForceKeys[] = {
     {.table = "force",
      .key = "expression",
      .type = KeyType::text,
-     .also =
-         "at most 4096 characters, not with f, amplitude, omega or phase, not with method exact",
+     .also = "at most 4096 characters, not with f, amplitude, omega, phase or linear, not with "
+             "method exact",
      .only_some = "u and v",
      .only_with = &Capabilities::state_force,
      .meaning = "the whole body force as a muparser function of t, e.g. \"-9.80665 + 14.71 * "
@@ -66,9 +78,59 @@ const KeySpec kForceKeys[] = {
        return s.model.expression.empty() ? KeyValue() : KeyValue(s.model.expression);
      },
      .set = [](Scene& s, const KeyValue& v) { s.model.expression = std::get<std::string>(v); }},
+    // force.linear = { k, c, u_eq }: adds -k (u - u_eq) - c v to f and the harmonic part.
+    {.table = "force.linear",
+     .key = "k",
+     .type = KeyType::number,
+     .also = kLinearAlso,
+     .only_some = "a linear force",
+     .only_with = &Capabilities::linear_force,
+     .meaning = "spring constant of the linear force -k (u - u_eq) - c v added to f and the "
+                "harmonic part (0 when left out; < 0: an inverted spring); exact follows it in "
+                "closed form",
+     .get = [](const Scene& s) { return linear_value(s, &LinearSpring::k); },
+     .set = [](Scene& s, const KeyValue& v) { linear(s).k = std::get<double>(v); }},
+    {.table = "force.linear",
+     .key = "c",
+     .type = KeyType::number,
+     .also = kLinearAlso,
+     .meaning = "damping of the linear force, per unit time (0 when left out; < 0 feeds energy in)",
+     .get = [](const Scene& s) { return linear_value(s, &LinearSpring::c); },
+     .set = [](Scene& s, const KeyValue& v) { linear(s).c = std::get<double>(v); }},
+    {.table = "force.linear",
+     .key = "u_eq",
+     .type = KeyType::number,
+     .also = kLinearAlso,
+     .meaning = "the spring's rest position (0 when left out)",
+     .get = [](const Scene& s) { return linear_value(s, &LinearSpring::u_eq); },
+     .set = [](Scene& s, const KeyValue& v) { linear(s).u_eq = std::get<double>(v); }},
 };
 
 constexpr std::string_view kHarmonicKeys[] = {"amplitude", "omega", "phase"};
+
+// force.linear: a table with at least one key, no expression beside it (the expression is the
+// whole force; -k (u - u_eq) - c v belongs inside it), and a method that takes it.
+void check_linear(const KeyReader& r, const toml::table& force, const Scene& scene) {
+  const toml::node* linear = force.get("linear");
+  if (!linear) return;
+  if (const toml::table* keys = linear->as_table(); keys && keys->empty())
+    r.fail_value("force", "linear", *linear,
+                 "the table is empty: give k, c or u_eq (any finite numbers, each 0 when left "
+                 "out), or leave force.linear out");
+  if (const toml::node* expression = force.get("expression"))
+    r.fail_value("force", "expression", *expression,
+                 "is exclusive with force.linear = " + show(*linear) +
+                     ": the expression gives the whole force f(t, u, v); write -k * (u - u_eq) - "
+                     "c * v inside it, or give the linear part with f and the harmonic part "
+                     "(with --set, --unset force.expression or --unset force.linear)");
+  const MethodInfo& method = method_info(scene.method);
+  if (!method.can.linear_force)
+    r.fail_value("method", "name", *r.table("method", true)->get("name"),
+                 "'" + std::string(method.name) +
+                     "' takes no force of the state, and force.linear adds -k (u - u_eq) - c v: "
+                     "use method.name = \"exact\", its closed-form reference (" +
+                     join(methods_with(&Capabilities::linear_force)) + " take one)");
+}
 
 }  // namespace
 
@@ -81,10 +143,11 @@ void check_force(const KeyReader& r, const toml::table& root, const Scene& scene
   if (!force) return;
   if (force->empty())
     r.fail_table("force", "[force]",
-                 "the table is empty: give f, or amplitude and omega (and phase), or expression; "
-                 "leave [force] out for f = 0");
+                 "the table is empty: give f, or amplitude and omega (and phase), or expression, "
+                 "or linear; leave [force] out for f = 0");
   const auto node = [&](std::string_view key) { return force->get(key); };
   const toml::node* expression = node("expression");
+  check_linear(r, *force, scene);
   // An expression is the whole force: with f beside it, a scene that writes gravity in both
   // (as f = -g above an expression "-g + ...") would double it without a word.
   if (expression && node("f"))

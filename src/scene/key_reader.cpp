@@ -10,9 +10,14 @@
 namespace impact {
 namespace {
 
-// table.key as a message names it.
+// table.key as a message names it; a table inside another (force.linear) by its dotted path.
 std::string key_name(std::string_view table, std::string_view key) {
-  return show_key(table) + "." + show_key(key);
+  std::string name;
+  for (std::size_t dot; (dot = table.find('.')) != std::string_view::npos;) {
+    name += show_key(table.substr(0, dot)) + ".";
+    table.remove_prefix(dot + 1);
+  }
+  return name + show_key(table) + "." + show_key(key);
 }
 
 std::vector<std::string_view> choices(const KeySpec& spec) {
@@ -75,13 +80,19 @@ void KeyReader::only(const toml::table& table, std::string_view where,
 }
 
 const toml::table* KeyReader::table(std::string_view name, bool required) const {
-  const toml::node* node = root_.get(name);
+  // A table inside another (force.linear) by its path; the outer one is read first.
+  const toml::node* node =
+      name.find('.') == std::string_view::npos ? root_.get(name) : root_.at_path(name).node();
   if (!node) {
     if (required) fail_table(name, "[" + std::string(name) + "]", "required table is missing");
     return nullptr;
   }
-  if (!node->is_table())
+  if (!node->is_table()) {
+    // force.linear = 3: a key of the outer table, where a --set of it is recorded.
+    if (const auto dot = name.rfind('.'); dot != std::string_view::npos)
+      fail_value(name.substr(0, dot), name.substr(dot + 1), *node, "must be a table");
     fail_table(name, std::string(name) + " = " + show(*node), "must be a table");
+  }
   return node->as_table();
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <stdexcept>
+#include <utility>
 
 #include "scene/scene_error.hpp"
 #include "scene/scene_keys.hpp"
@@ -79,6 +80,45 @@ void set_value(toml::table& table, const std::string& key, const std::string& va
   }
 }
 
+// Whether `path` is a table inside another (force.linear), which --set and --unset address as
+// force.linear.k.
+bool nested_table(std::string_view path) {
+  if (path.find('.') == std::string_view::npos) return false;
+  for (const TableSpec& t : scene_tables())
+    if (t.name == path) return true;
+  return false;
+}
+
+// The path table.key split at its last dot when the part before it is a nested table, else at its
+// first: {"force.linear", "k"}, {"time", "h"}.
+std::pair<std::string, std::string> split_key(const std::string& path) {
+  const auto last = path.rfind('.');
+  if (last != std::string::npos && nested_table(std::string_view(path).substr(0, last)))
+    return {path.substr(0, last), path.substr(last + 1)};
+  const auto dot = path.find('.');
+  if (dot == std::string::npos) return {path, ""};
+  return {path.substr(0, dot), path.substr(dot + 1)};
+}
+
+// The table at a path of one or two names, created (empty) where it is missing; nullptr where a
+// name on the path is no table.
+toml::table* table_at(toml::table& root, const std::string& path, bool create) {
+  toml::table* table = &root;
+  std::string_view rest = path;
+  while (!rest.empty()) {
+    const auto dot = rest.find('.');
+    const std::string name(rest.substr(0, dot));
+    rest = dot == std::string_view::npos ? std::string_view() : rest.substr(dot + 1);
+    if (!table->get(name)) {
+      if (!create) return nullptr;
+      table->insert(name, toml::table{});
+    }
+    table = table->get(name)->as_table();
+    if (!table) return nullptr;
+  }
+  return table;
+}
+
 }  // namespace
 
 void apply_set(toml::table& root, const std::string& assignment, Origins& origins) {
@@ -104,19 +144,17 @@ void apply_set(toml::table& root, const std::string& assignment, Origins& origin
     origins.record("internal", internal->name + "." + internal->key, change);
     return;
   }
-  auto dot = path.find('.');
-  if (dot == std::string::npos || dot == 0 || dot + 1 == path.size() ||
-      path.find('.', dot + 1) != std::string::npos)
-    fail("the key must be table.key, e.g. time.h (an internal variable's: internal.NAME.key)");
-  std::string tname = path.substr(0, dot), key = path.substr(dot + 1);
+  const auto [tname, key] = split_key(path);
+  if (tname.empty() || key.empty() || key.find('.') != std::string::npos)
+    fail(
+        "the key must be table.key, e.g. time.h (an internal variable's: internal.NAME.key; the "
+        "linear force's: force.linear.k)");
 
-  toml::node_view<toml::node> slot = root[tname];
-  if (!slot) {
-    root.insert(tname, toml::table{});
-    origins.record(tname, "", change);
-  }
-  toml::table* table = root[tname].as_table();
-  if (!table) fail(std::string("[").append(show_key(tname)) + "] is not a table");
+  const std::string outer = tname.substr(0, tname.find('.'));
+  if (!root.get(outer)) origins.record(outer, "", change);
+  if (outer != tname && !table_at(root, tname, false)) origins.record(tname, "", change);
+  toml::table* table = table_at(root, tname, true);
+  if (!table) fail(std::string("[").append(tname) + "] is not a table");
   set_value(*table, key, value, fail);
   origins.record(tname, key, change);
 }
@@ -146,11 +184,10 @@ void apply_unset(toml::table& root, const std::string& path, const std::vector<s
     return;
   }
   const auto dot = path.find('.');
-  const std::string tname = path.substr(0, dot);
-  const std::string key = dot == std::string::npos ? "" : path.substr(dot + 1);
+  const auto [tname, key] = split_key(path);
   if (tname.empty() || path.find('=') != std::string::npos ||
       (dot != std::string::npos && (key.empty() || key.find('.') != std::string::npos)))
-    fail("expected table.key or table, e.g. floor.cor or force");
+    fail("expected table.key or table, e.g. floor.cor, force or force.linear.k");
 
   const auto names = names_of;
   // A second --unset of the same key or table has nothing left to remove, and need not.
@@ -162,7 +199,7 @@ void apply_unset(toml::table& root, const std::string& path, const std::vector<s
       fail("there is no [" + show_key(tname) + "] in " + origins.file() +
            did_you_mean(tname, names(root)));
     }
-  } else if (toml::table* table = root[tname].as_table(); !table || !table->erase(key)) {
+  } else if (toml::table* table = table_at(root, tname, false); !table || !table->erase(key)) {
     if (removed) return;
     fail(table ? "there is no " + show_key(tname) + "." + show_key(key) + " in " + origins.file() +
                      did_you_mean(key, names(*table), tname + ".")

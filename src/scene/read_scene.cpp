@@ -76,7 +76,9 @@ const toml::node& node_at(const toml::table& root, std::string_view table, std::
 Scene build(const toml::table& root, const Origins& origins) {
   const KeyReader r(root, origins);
   std::vector<std::string_view> tables;
-  for (const TableSpec& t : scene_tables()) tables.push_back(t.name);
+  for (const TableSpec& t : scene_tables())
+    if (t.name.find('.') == std::string_view::npos)
+      tables.push_back(t.name);  // force.linear: a key
   tables.push_back("internal");  // an array of tables (internal_keys.hpp)
   r.only(root, "", tables);
   Scene scene;

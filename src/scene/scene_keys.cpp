@@ -27,7 +27,7 @@ std::span<const std::string_view> channel_names() {
 constexpr Range kPositive{.lo = 0.0, .lo_open = true};
 
 const TableSpec kTables[] = {
-    {"initial", true}, {"floor", false}, {"force", false},
+    {"initial", true}, {"floor", false}, {"force", false},  {"force.linear", false},
     {"time", true},    {"method", true}, {"output", false},
 };
 
@@ -143,6 +143,10 @@ std::vector<std::string_view> key_names(std::string_view table, std::string_view
   std::vector<std::string_view> names;
   for (const auto& k : scene_keys())
     if (k.table == table) names.push_back(k.key);
+  // A table inside this one (force.linear in [force]) is one of its keys.
+  for (const TableSpec& t : kTables)
+    if (t.name.size() > table.size() && t.name.starts_with(table) && t.name[table.size()] == '.')
+      names.push_back(t.name.substr(table.size() + 1));
   for (const auto& k : method_keys())
     if (k.table == table && k.method == method) names.push_back(k.key);
   return names;

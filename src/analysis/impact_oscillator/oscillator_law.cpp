@@ -10,51 +10,6 @@
 
 namespace impact::impact_oscillator {
 
-namespace {
-
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
-Model rest_model(const LinearForce& f, double phi) {
-  Model m;
-  m.phi = phi;
-  m.f = f.f0 - f.k * (phi - f.u_eq);
-  if (f.amplitude != 0.0) m.harmonic = Harmonic{f.amplitude, f.omega, f.phase};
-  return m;
-}
-
-}  // namespace
-
-LinearLaw::LinearLaw(const LinearForce& force, double phi)
-    : force_(force), phi_(phi), rest_law_(rest_model(force, phi)) {}
-
-void LinearLaw::start(double t, double gap, double v, bool at_crossing) {
-  flight_ = LinearFlight(force_, t, phi_ + gap, v);
-  gap_ = gap;
-  certified_ = checked_ = t;
-  if (gap != 0.0 || v != 0.0) return;
-  // A zero-speed departure: g'' = f_rest(t) and g''' = -c f_rest(t) + f_rest'(t) there; the
-  // first stretch is certified by the next-order bounds, as flight_search.hpp's
-  // zero_speed_departure does for a harmonic force.
-  const double f = at_crossing ? 0.0 : force(t), rate = -force_.c * f + rest_law_.rate(t);
-  const DepartureBounds bounds = flight_.departure_bounds(t);
-  double stretch = 0.0;
-  if (f > 0.0) stretch = bounds.C > 0.0 ? 1.5 * f / bounds.C : kInfinity;
-  if (f >= 0.0 && rate > 0.0)
-    stretch = std::fmax(stretch, bounds.D > 0 ? 2 * rate / bounds.D : kInfinity);
-  certified_ += std::fmin(stretch, bounds.until - t);
-}
-
-std::optional<double> LinearLaw::chatter_window(double t, double V, double e) const {
-  const double g = -force(t);
-  if (!(g > 0.0)) return std::nullopt;
-  const double W0 = chatter_trial_window(e, V, g);
-  const double drift = std::fabs(force_.amplitude) * force_.omega * W0 + std::fabs(force_.c) * V;
-  const double g_low = g - drift;
-  if (!(g_low > 0.0)) return std::nullopt;
-  const double spring = std::fabs(force_.k) * V * V / (2 * g_low);
-  return chatter_window_within(e, V, W0, g_low - spring, g + drift + spring);
-}
-
 LinearTrack oscillator_track(const Oscillator& o, const State& initial, double t0) {
   return LinearTrack(LinearLaw(oscillator_force(o.omega), o.phi()), oscillator_model(o), initial,
                      t0);
