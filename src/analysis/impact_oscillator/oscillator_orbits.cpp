@@ -140,13 +140,22 @@ namespace {
 // by then); a saddle-node from runs kicked by 1e-7, fitted over impacts 100..300.
 constexpr int kRunImpacts = 300, kPdFitFrom = 150, kSnFitFrom = 100;
 constexpr double kPdKick = 1e-5, kSnKick = 1e-7;
+
+// What the bisection and the extrapolation read off the runs: the growth rate of a kicked orbit
+// (zero at a period doubling) and its exponential (zero at a saddle-node).
+double period_doubling_rate(const Oscillator& o) {
+  return growth_rate(o, kRunImpacts, kPdFitFrom, kPdKick);
+}
+double saddle_node_factor(const Oscillator& o) {
+  return std::exp(growth_rate(o, kRunImpacts, kSnFitFrom, kSnKick));
+}
 }  // namespace
 
 double bisect_period_doubling_sigma(double omega, double r, double lo, double hi,
                                     double tolerance) {
   return bisect(
       [&](double sigma) {
-        return growth_rate({omega, r, sigma}, kRunImpacts, kPdFitFrom, kPdKick);
+        return period_doubling_rate({omega, r, sigma});
       },
       lo, hi, tolerance);
 }
@@ -155,7 +164,7 @@ double bisect_period_doubling_omega(double sigma, double r, double lo, double hi
                                     double tolerance) {
   return bisect(
       [&](double omega) {
-        return growth_rate({omega, r, sigma}, kRunImpacts, kPdFitFrom, kPdKick);
+        return period_doubling_rate({omega, r, sigma});
       },
       lo, hi, tolerance);
 }
@@ -164,7 +173,7 @@ double extrapolate_saddle_node_sigma(double omega, double r, double sigma_near,
                                      const std::vector<double>& offsets) {
   return extrapolate(
       [&](double sigma) {
-        return std::exp(growth_rate({omega, r, sigma}, kRunImpacts, kSnFitFrom, kSnKick));
+        return saddle_node_factor({omega, r, sigma});
       },
       sigma_near, offsets);
 }
@@ -173,7 +182,7 @@ double extrapolate_saddle_node_omega(double sigma, double r, double omega_near,
                                      const std::vector<double>& offsets) {
   return extrapolate(
       [&](double omega) {
-        return std::exp(growth_rate({omega, r, sigma}, kRunImpacts, kSnFitFrom, kSnKick));
+        return saddle_node_factor({omega, r, sigma});
       },
       omega_near, offsets);
 }
