@@ -241,7 +241,12 @@ void ForceFunction::set_internal(const std::array<double, kMaxInternal>& z) cons
 Model linear_as_expression(const Model& model) {
   if (!model.linear) return model;
   // A number as the expression reads it back: parenthesized, so that a sign is no operator.
-  const auto number = [](double x) { return "(" + round_trip(x) + ")"; };
+  const auto number = [](double x) {
+    std::string text = "(";
+    text += round_trip(x);
+    text += ')';
+    return text;
+  };
   const LinearSpring& spring = *model.linear;
   std::string text = number(model.f);
   if (spring.k != 0.0) text += " - " + number(spring.k) + " * (u - " + number(spring.u_eq) + ")";
