@@ -41,8 +41,8 @@ inline State paper_free_step(const State& s, double f, double h) {
 // The free flight at time t after the anchor (u_a, v_a) under the force f (Real: double or a vector
 // of lanes; Scalar: double or Real).
 template <class Real, class Scalar>
-void free_flight(const Real& u_a, const Real& v_a, const Real& t, const Scalar& f, Real& u,
-                 Real& v) {
+[[gnu::always_inline]] inline void free_flight(const Real& u_a, const Real& v_a, const Real& t,
+                                               const Scalar& f, Real& u, Real& v) {
   u = u_a + t * (v_a + t * f / 2);
   v = v_a + t * f;
 }

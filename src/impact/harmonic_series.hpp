@@ -49,7 +49,7 @@ constexpr std::array<double, 9> inverse_factorials(int n) {
   return c;
 }
 // sum_k (-1)^k c_k y^k, by Horner.
-inline double alternating(const std::array<double, 9>& c, double y) {
+[[gnu::always_inline]] inline double alternating(const std::array<double, 9>& c, double y) {
   double sum = c[8];
   for (int k = 7; k >= 0; --k) sum = c[k] - y * sum;
   return sum;
@@ -61,7 +61,7 @@ inline constexpr std::array<double, 9> kSinOverX = inverse_factorials(1),
 
 // The terms for |x| < 1/2, by their series in y = x^2 (no call: it runs in the time-steppers'
 // loops).
-inline SlowAngle slow_angle_series(double x) {
+[[gnu::always_inline]] inline SlowAngle slow_angle_series(double x) {
   const double y = x * x;
   SlowAngle a;
   a.s1 = detail::alternating(detail::kSinOverX, y);
@@ -72,7 +72,7 @@ inline SlowAngle slow_angle_series(double x) {
 }
 
 // The terms from sin x and cos x, for |x| >= 1/2.
-inline SlowAngle slow_angle(double x, double sin_x, double cos_x) {
+[[gnu::always_inline]] inline SlowAngle slow_angle(double x, double sin_x, double cos_x) {
   SlowAngle a;
   a.s1 = sin_x / x;
   a.c1 = (1 - cos_x) / x;

@@ -25,8 +25,9 @@ namespace impact {
 // fall below the floor's ulp and u would freeze while v grows; the gap keeps them.
 // e is the COR (1 without one); contact_force is set to P^{l+1} / h.
 template <class Real>
-void moreau_jean_update(Real& gap, Real& v, Real& contact_force, const Real& v_free, const Real& e,
-                        double theta, double h) {
+[[gnu::always_inline]] inline void moreau_jean_update(Real& gap, Real& v, Real& contact_force,
+                                                      const Real& v_free, const Real& e,
+                                                      double theta, double h) {
   // The contact is active when u^l - phi + gamma h v^l <= 0; then the one-contact LCP in closed
   // form: the smallest impulse that makes v^{l+1} >= -e v^l. `bound` is -e v^l where the contact
   // is active and v_free (so no impulse) elsewhere: a selection feeding a comparison, because
@@ -43,8 +44,9 @@ void moreau_jean_update(Real& gap, Real& v, Real& contact_force, const Real& v_f
 
 // The step under a constant force f.
 template <class Real>
-void moreau_jean_step(Real& gap, Real& v, Real& contact_force, const Real& f, const Real& e,
-                      double theta, double h) {
+[[gnu::always_inline]] inline void moreau_jean_step(Real& gap, Real& v, Real& contact_force,
+                                                    const Real& f, const Real& e, double theta,
+                                                    double h) {
   moreau_jean_update(gap, v, contact_force, Real(v + h * f), e, theta, h);
 }
 
@@ -73,7 +75,7 @@ class BasicMoreauJean {
         e_(newton_e(contact_law(model, kElasticReading))),
         force_(model, h) {}
 
-  void initialize(const State& s, std::int64_t l) {
+  [[gnu::always_inline]] void initialize(const State& s, std::int64_t l) {
     state_ = {s.u - phi_, s.v};
     if constexpr (TimeDependent) force_.seek(l);
     if constexpr (!TimeDependent) repeats_.reset();
@@ -89,7 +91,7 @@ class BasicMoreauJean {
     force_.set_internal(z);
   }
 
-  StepInfo do_step(State& s, std::int64_t l) {
+  [[gnu::always_inline]] StepInfo do_step(State& s, std::int64_t l) {
     StepInfo info;
     if constexpr (TimeDependent) {
       const SchemeForce::Impulse impulse = force_.advance(l, state_);

@@ -23,8 +23,9 @@ inline constexpr std::int64_t kMaxRepeatPeriod = 8;
 // steps (a period-2 rest has one contact step per step, a chatter one or two per period).
 class RepeatWatch {
  public:
-  // Contact step l ended in s, the state that alone decides every step after it.
-  void contact(std::int64_t l, const State& s) {
+  // Contact step l ended in s, the state that alone decides every step after it. Inlined and by
+  // value, as everything on a step's path is (run.hpp, simulate()).
+  [[gnu::always_inline]] void contact(std::int64_t l, State s) {
     const Key key{std::bit_cast<std::int64_t>(s.u), std::bit_cast<std::int64_t>(s.v), l};
     std::int64_t p = 0;
     if (key.a == last_[0].a && key.b == last_[0].b) p = l - last_[0].l;
@@ -41,11 +42,11 @@ class RepeatWatch {
     return {std::bit_cast<double>(last_[0].a), std::bit_cast<double>(last_[0].b)};
   }
   // The run moved on by n steps without stepping (a multiple of the period).
-  void skip(std::int64_t n) {
+  [[gnu::always_inline]] void skip(std::int64_t n) {
     last_[0].l += n;
     last_[1].l += n;
   }
-  void reset() { *this = RepeatWatch(); }
+  [[gnu::always_inline]] void reset() { *this = RepeatWatch(); }
 
  private:
   // Far enough back that l - kNone is no period; l never reaches it.

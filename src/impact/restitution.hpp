@@ -63,9 +63,11 @@ inline void restitute(StepInfo& info, double v_after, double v_free, double h) {
 // vectors gives lanes of long under GCC and of long long under clang, so the contact mask is
 // converted to the type of has_cor (same size, same bits) before they are combined.
 template <class Real, class Mask, class Bits, class Comparison>
-void velocity_after_step(const Mask& has_cor, const Real& cor, const Bits& fixed_point,
-                         const Comparison& contact_force_positive, const Real& v_before,
-                         const Real& v_scheme, Real& v_after) {
+[[gnu::always_inline]] inline void velocity_after_step(const Mask& has_cor, const Real& cor,
+                                                       const Bits& fixed_point,
+                                                       const Comparison& contact_force_positive,
+                                                       const Real& v_before, const Real& v_scheme,
+                                                       Real& v_after) {
   // |v| as the bits of a double: an integer that orders like |v|.
   Bits magnitude;
   std::memcpy(&magnitude, &v_before, sizeof magnitude);

@@ -74,7 +74,7 @@ class GridPhasor {
   GridPhasor() = default;
   GridPhasor(const Harmonic& w, double h);
   // To theta_l.
-  void seek(std::int64_t l) {
+  [[gnu::always_inline]] void seek(std::int64_t l) {
     l_ = l;
     Pair upper = phase_;
     for (int k = kLevels - 1; k >= 1; --k)
@@ -84,7 +84,7 @@ class GridPhasor {
     now_ = times(upper_, table_[digit_]);
   }
   // From theta_l to theta_{l+1}.
-  void advance() {
+  [[gnu::always_inline]] void advance() {
     if (++digit_ == kBase) [[unlikely]] {
       seek(l_ + 1);
       return;
@@ -103,7 +103,7 @@ class GridPhasor {
   struct Pair {
     double c = 1, s = 0;
   };
-  static Pair times(const Pair& a, const Pair& b) {
+  [[gnu::always_inline]] static Pair times(const Pair& a, const Pair& b) {
     return {a.c * b.c - a.s * b.s, a.s * b.c + a.c * b.s};
   }
 
@@ -139,7 +139,7 @@ class SchemeForce {
   // reference to the caller's state kept it in memory (a harmonic moreau_jean step took 7.2
   // instead of 5.6 ns on an Intel Xeon family 6 model 167).
   template <bool Expression = true>
-  Impulse advance(std::int64_t l, State at = {}) {
+  [[gnu::always_inline]] Impulse advance(std::int64_t l, State at = {}) {
     Impulse impulse;
     if (has_phasor_) {
       seek(l);
@@ -204,7 +204,7 @@ class SchemeFlight {
 
   bool constant_force() const { return force_.constant(); }
   // A free flight starts at (t_l, s).
-  void start(std::int64_t l, const State& s) {
+  [[gnu::always_inline]] void start(std::int64_t l, const State& s) {
     anchor_l_ = l;
     anchor_ = now_ = s;
     stepped_ = {};
@@ -217,7 +217,7 @@ class SchemeFlight {
   // The state at t_{l+1} if no contact force acts in step l (l: consecutive after start, the state
   // at t_l the last step's or restate's); Expression as for SchemeForce::advance.
   template <bool Expression = true>
-  State step(std::int64_t l) {
+  [[gnu::always_inline]] State step(std::int64_t l) {
     State next;
     const double s = static_cast<double>(l + 1 - anchor_l_) * h_;
     free_flight(anchor_.u, anchor_.v, s, f_, next.u, next.v);
@@ -256,7 +256,7 @@ class SchemeFlight {
  private:
   // The slow force's terms of the file's comment at s = t_m - t_a: x below 1/2 by the series,
   // above from the phasor's rotation since the anchor (no call in either).
-  void add_slow_terms(double s, State& next) const {
+  [[gnu::always_inline]] void add_slow_terms(double s, State& next) const {
     const double x = omega_ * s, c = force_.phasor().cos(), sn = force_.phasor().sin();
     const SlowAngle w = std::fabs(x) < 0.5 ? slow_angle_series(x)
                                            : slow_angle(x, sn * anchor_cos_ - c * anchor_sin_,
