@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -32,6 +33,7 @@
 #include "performance_cli.hpp"
 #include "performance_forced.hpp"
 #include "performance_phases.hpp"
+#include "performance_ratios.hpp"
 #include "scene/read_scene.hpp"
 
 namespace {
@@ -216,7 +218,9 @@ struct Quantity {
 };
 
 Quantity quantity_of(const std::string& name) {
-  if (name.rfind("ensemble", 0) == 0) return {"particle_steps_per_s", "particle-steps/s", 1.0};
+  if (name.rfind("ensemble", 0) == 0 || name.rfind("sweep_kernel", 0) == 0)
+    return {"particle_steps_per_s", "particle-steps/s", 1.0};
+  if (name.rfind("cli_sweep", 0) == 0) return {"s_per_step", "ns/particle-step", 1e9};
   if (name == "exact_impacts" || name.rfind("impacts/", 0) == 0)
     return {"s_per_impact", "ns/impact", 1e9};
   if (name == "cli_rows") return {"s_per_step", "ns/row", 1e9};
@@ -224,7 +228,8 @@ Quantity quantity_of(const std::string& name) {
 }
 
 // The best and median of each benchmark: benchmarks.csv, table.md and summary.toml.
-void write_tables(const std::string& dir, const Collector& collector) {
+void write_tables(const std::string& dir, const Collector& collector,
+                  const std::function<double(const std::string&)>& best) {
   std::string csv = "benchmark,quantity,unit,best,median\n";
   std::string md = "| benchmark | unit | best | median |\n| --- | --- | ---: | ---: |\n";
   toml::table summary{{"processor", processor_name()}};
@@ -251,6 +256,7 @@ void write_tables(const std::string& dir, const Collector& collector) {
     summary.insert(name, entry);
   }
   write_text_file(dir + "/benchmarks.csv", csv);
+  md += "\nThe ratios, best against best:\n\n" + ratio_table(best);
   write_text_file(dir + "/table.md", md);
   write_text_file(dir + "/summary.toml", summary_text(kPerformance, summary));
 }
@@ -327,11 +333,21 @@ int main(int argc, char** argv) {
   }
   register_cli(cli, dir, "direct", "figure3/no_cor", 1'000'000, 1, "cli_rows");
   register_phase_benchmarks(&add_statistics, cli, dir);
+  register_sweep_benchmarks(&add_statistics, cli, dir);
 
   Collector collector;
   benchmark::RunSpecifiedBenchmarks(&collector);
   benchmark::Shutdown();
-  write_tables(dir, collector);
+  // A benchmark's best: the smallest time per step, the largest rate.
+  const auto best = [&](const std::string& name) {
+    const auto it = collector.results().find(name);
+    if (it == collector.results().end()) return std::nan("");
+    const Quantity q = quantity_of(name);
+    const auto& values = q.key == "particle_steps_per_s" ? it->second.max : it->second.min;
+    const auto key = values.find(q.key);
+    return key == values.end() ? std::nan("") : key->second * q.scale;
+  };
+  write_tables(dir, collector, best);
   write_plot_data(dir, collector);
   return 0;
 }
