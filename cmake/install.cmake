@@ -15,7 +15,7 @@ set(IMPACT_PUBLIC_HEADERS
   fb_newton.hpp flight_search.hpp force.hpp format.hpp free_flight.hpp harmonic_series.hpp
   internal.hpp internal_floor.hpp internal_stepper.hpp linear_flight.hpp linear_law.hpp
   model.hpp moreau_jean.hpp ode_flight.hpp output.hpp penalty.hpp registry.hpp repeats.hpp
-  restitution.hpp row_stream.hpp run.hpp run_scene.hpp scene.hpp scheme_flight.hpp stepper.hpp
+  restitution.hpp row_stream.hpp run.hpp run_result.hpp run_scene.hpp scene.hpp scheme_flight.hpp stepper.hpp
   summary.hpp summary_lanes.hpp version.hpp work_energy.hpp)
 list(TRANSFORM IMPACT_PUBLIC_HEADERS PREPEND ${PROJECT_SOURCE_DIR}/src/impact/)
 # A public header that includes a header left out would break every program that includes it:
