@@ -157,11 +157,12 @@ claims-md: configure
 clean:
 	rm -rf $(BUILD) $(BUILD).configure.log $(RESULTS)
 
-# The examples against the installed library (find_package(impact 0.2) and pkg-config), as a
-# program outside the repository builds them: only the library and the command are built here.
+# The examples against the installed library (find_package(impact 0.2 COMPONENTS scene) and
+# pkg-config), as a program outside the repository builds them: only the libraries and the
+# command are built here.
 .PHONY: examples
 examples: configure
-	@cmake --build $(BUILD) -j $(JOBS) --target impact_core impact_cli
+	@cmake --build $(BUILD) -j $(JOBS) --target impact_core impact_scene impact_cli
 	@JOBS=$(JOBS) bash examples/check_installed.sh $(BUILD)
 
 # The API reference (docs/library.md): Doxygen over the installed headers, failing on any warning.

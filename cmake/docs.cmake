@@ -1,8 +1,8 @@
-# The API reference: Doxygen over the installed headers (cmake/install.cmake's list), as the
+# The API reference: Doxygen over the installed headers (cmake/install.cmake's lists), as the
 # target impact_docs that `make docs` builds (it installs doxygen first). Without doxygen the
 # target says what to install.
 set(IMPACT_DOCS_DIR ${PROJECT_BINARY_DIR}/docs)
-string(JOIN " " IMPACT_DOXYGEN_INPUT ${IMPACT_PUBLIC_HEADERS})
+string(JOIN " " IMPACT_DOXYGEN_INPUT ${IMPACT_PUBLIC_HEADERS} ${IMPACT_SCENE_PUBLIC_HEADERS})
 # The filter's interpreter: any python3 will do; Debian's first, as for the module.
 find_program(IMPACT_DOCS_PYTHON NAMES python3 PATHS /usr/bin NO_DEFAULT_PATH)
 find_program(IMPACT_DOCS_PYTHON NAMES python3)

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The examples against the installed package, as a program outside the repository uses it:
 # installs BUILD (already built) to a temporary prefix, builds examples/ there with
-# find_package(impact 0.2) and runs them, then compiles one by hand with pkg-config's flags.
+# find_package(impact 0.2 COMPONENTS scene) and runs them, then compiles two by hand with
+# pkg-config's flags (impact, impact-scene).
 #   bash examples/check_installed.sh BUILD
 set -euo pipefail
 build=${1:?usage: check_installed.sh BUILD}
@@ -17,6 +18,8 @@ for example in bouncing_ball ensemble_sweep scene_run; do
   echo "== $example (find_package(impact 0.2), impact::impact)"
   "$tmp/b/$example"
 done
+echo "== run_scene_file drop.toml (find_package(impact 0.2 COMPONENTS scene), impact::scene)"
+"$tmp/b/run_scene_file" "$examples/drop.toml"
 
 echo "== bouncing_ball (pkg-config --cflags --libs impact)"
 pc=$(find "$tmp/prefix" -name impact.pc)
@@ -24,4 +27,8 @@ export PKG_CONFIG_PATH="$(dirname "$pc")${PKG_CONFIG_PATH:+:$PKG_CONFIG_PATH}"
 read -r -a flags <<<"$(pkg-config --cflags --libs impact)"
 "${CXX:-c++}" -std=c++20 -O2 "$examples/bouncing_ball.cpp" "${flags[@]}" -o "$tmp/bouncing_ball_pc"
 "$tmp/bouncing_ball_pc"
+echo "== run_scene_file drop.toml (pkg-config --cflags --libs impact-scene)"
+read -r -a flags <<<"$(pkg-config --cflags --libs impact-scene)"
+"${CXX:-c++}" -std=c++20 -O2 "$examples/run_scene_file.cpp" "${flags[@]}" -o "$tmp/run_scene_file_pc"
+"$tmp/run_scene_file_pc" "$examples/drop.toml"
 echo "examples: built against the package installed from $build (CMake and pkg-config) and ran"

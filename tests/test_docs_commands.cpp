@@ -5,8 +5,8 @@
 // in that directory are this build's and this checkout's, so a command reads as written and
 // writes nothing outside it. Blocks fenced without `sh` are shown, not run (make targets, a
 // cluster's job script). Also: every relative link of these pages names a file that exists, and
-// docs/library.md shows examples/scene_run.cpp (built against the installed package by `make
-// examples`) as it is.
+// docs/library.md shows examples/scene_run.cpp and examples/run_scene_file.cpp (built against the
+// installed package by `make examples`) as they are.
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <regex>
@@ -159,6 +159,13 @@ TEST_CASE("every relative link of the README and docs/ names a file that exists"
 TEST_CASE("docs/library.md shows examples/scene_run.cpp as it is", "[docs]") {
   const std::string page = slurp((kRoot / "docs/library.md").string());
   const std::string program = slurp((kRoot / "examples/scene_run.cpp").string());
+  REQUIRE(!program.empty());
+  CHECK(page.find("```cpp\n" + program + "```\n") != std::string::npos);
+}
+
+TEST_CASE("docs/library.md shows examples/run_scene_file.cpp as it is", "[docs]") {
+  const std::string page = slurp((kRoot / "docs/library.md").string());
+  const std::string program = slurp((kRoot / "examples/run_scene_file.cpp").string());
   REQUIRE(!program.empty());
   CHECK(page.find("```cpp\n" + program + "```\n") != std::string::npos);
 }

@@ -15,7 +15,7 @@
 #include "impact/force.hpp"
 #include "impact/registry.hpp"
 #include "impact/run.hpp"
-#include "impact/run_scene.hpp"
+#include "impact/run_result.hpp"
 #include "impact/scene.hpp"
 #include "impact/scheme_flight.hpp"
 #include "impact/summary.hpp"

@@ -14,6 +14,7 @@
 #include "cli_support.hpp"
 #include "impact/channels.hpp"
 #include "impact/output.hpp"
+#include "impact/run_result.hpp"
 #include "impact/run_scene.hpp"
 #include "output_support.hpp"
 #include "scene/read_scene.hpp"

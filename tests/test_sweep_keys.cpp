@@ -12,7 +12,7 @@
 
 #include "cli_support.hpp"
 #include "impact/output.hpp"
-#include "impact/run_scene.hpp"
+#include "impact/run_result.hpp"
 #include "impact/summary.hpp"
 #include "scene/read_scene.hpp"
 

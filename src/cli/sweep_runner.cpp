@@ -16,7 +16,7 @@
 #include <tuple>
 
 #include "cli/progress.hpp"
-#include "impact/run_scene.hpp"
+#include "impact/run_result.hpp"
 #include "impact/summary.hpp"
 
 namespace impact::cli {

@@ -1,7 +1,7 @@
 // The library's public API in one include, for a program that uses the installed package
 // (docs/library.md): the model, the steppers behind one interface
-// and their registry, the time loop, the exact reference and the error norms, the ensemble, and
-// the writers of rows and events.
+// and their registry, the time loop, one run of a scene as a value (run_result.hpp), the exact
+// reference and the error norms, the ensemble, and the writers of rows and events.
 #pragma once
 
 #include "impact/chain_moreau_jean.hpp"
@@ -23,6 +23,7 @@
 #include "impact/penalty.hpp"
 #include "impact/registry.hpp"
 #include "impact/run.hpp"
+#include "impact/run_result.hpp"
 #include "impact/run_scene.hpp"
 #include "impact/scene.hpp"
 #include "impact/stepper.hpp"

@@ -154,16 +154,4 @@ RunReport run_scene(const Scene& scene, AnyStepper& stepper, const RunOutputs& o
   return report;
 }
 
-PointOutcome summarize(const Scene& scene, bool against_exact, const std::atomic<bool>* stop,
-                       std::int64_t check_every) {
-  AnyStepper stepper = make_stepper(scene);
-  RunOutputs outputs;
-  outputs.summary = true;
-  outputs.against_exact = against_exact;
-  outputs.stop = stop;
-  outputs.check_every = check_every;
-  const RunReport report = run_scene(scene, stepper, outputs);
-  return {*report.point, report.errors, report.reference_seconds};
-}
-
 }  // namespace impact

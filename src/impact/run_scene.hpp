@@ -48,9 +48,4 @@ struct RunReport {
 // row overflows.
 RunReport run_scene(const Scene& scene, AnyStepper& stepper, const RunOutputs& outputs);
 
-// run_scene() of the scene's method with a summary (and the errors against the reference when
-// against_exact): one point of `impact sweep`; `stop`, when given, read every check_every steps.
-PointOutcome summarize(const Scene& scene, bool against_exact,
-                       const std::atomic<bool>* stop = nullptr, std::int64_t check_every = 0);
-
 }  // namespace impact

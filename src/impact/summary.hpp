@@ -24,7 +24,7 @@ namespace impact {
 struct PointSummary {
   State final;  // u^n, v^n at T
   // E^n (3-1), v^2/2 - f u, for a constant force; for a time-dependent one, v^2/2 - f(0) u(0) - W
-  // (work_energy.hpp), set by summarize() (run_scene.hpp); NaN where nothing set it.
+  // (work_energy.hpp), set by summarize() (run_result.hpp); NaN where nothing set it.
   double energy_final = std::numeric_limits<double>::quiet_NaN();
   std::int64_t contact_steps = 0;
   std::int64_t impacts = 0;  // contact episodes before rest (all of them without rest)

@@ -209,6 +209,14 @@ Scene parse_scene(std::string_view text, const std::string& source,
   return parse_with(parse_toml(text, source), source, overrides, unsets);
 }
 
+Scene read_scene(const SceneFile& file, const SceneEdits& edits) {
+  return load_scene(file.path.string(), edits.set, edits.unset);
+}
+
+Scene read_scene(const SceneText& text, const SceneEdits& edits) {
+  return parse_scene(text.text, text.source, edits.set, edits.unset);
+}
+
 Run load_run(const std::string& path, const std::vector<std::string>& overrides,
              const std::vector<std::string>& unsets) {
   std::string text = read_scene_file(path);

@@ -1,16 +1,41 @@
 // The scene reader: a scene file (TOML) and --set overrides into a validated Scene
 // (impact/scene.hpp). A scene states only what it needs; what it leaves out is absent, not zero.
+// Installed with the package as <impact/scene/read_scene.hpp> (the impact::scene target): it and
+// the headers it includes from this directory, by quoted same-directory includes that resolve
+// both here and there, include no toml++.
 #pragma once
 
+#include <filesystem>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "impact/registry.hpp"
 #include "impact/scene.hpp"
-#include "scene/scene_error.hpp"
+#include "scene_error.hpp"
 
 namespace impact {
+
+// What --set and --unset do to a scene before it is validated: `set` holds "table.key=value"
+// strings (the value read as a TOML value, or as a string when it is a bare word), `unset`
+// "table.key" or "table" strings (each must be in the scene); the unsets are applied first.
+struct SceneEdits {
+  std::vector<std::string> set, unset;
+};
+// A scene file (a pipe such as /dev/stdin too), named by its path in messages.
+struct SceneFile {
+  std::filesystem::path path;
+};
+// A scene's TOML text in memory, which must outlive the call; `source` names it in messages.
+struct SceneText {
+  std::string_view text;
+  std::string source = "<string>";
+};
+
+// The validated Scene of a file or of a text with its edits; a file and its text give the same
+// Scene. Throws SceneError naming the source, the key, the value and what is allowed.
+Scene read_scene(const SceneFile& file, const SceneEdits& edits = {});
+Scene read_scene(const SceneText& text, const SceneEdits& edits = {});
 
 // Reads and validates a scene file; `overrides` are "table.key=value" strings (the value is read
 // as a TOML value, or as a string when it is a bare word) and `unsets` "table.key" or "table"
