@@ -26,14 +26,25 @@ const ChannelInfo kChannels[] = {
     {Channel::z2, "z2", "internal variable 2", &Capabilities::internal_variables},
     {Channel::z3, "z3", "internal variable 3", &Capabilities::internal_variables},
     {Channel::z4, "z4", "internal variable 4", &Capabilities::internal_variables},
+    {Channel::beta, "beta", "the fraction of active bonds, in [0, 1], never rising ([bonding])",
+     &Capabilities::bonding},
+    {Channel::D, "D",
+     "the energy spent breaking bonds, int 2 gamma beta^2 Phi(g) (gamma R^2 - eps_a)_+ dt: E + D "
+     "is E(0) less the impacts' losses ([bonding])",
+     &Capabilities::bonding},
 };
 constexpr std::size_t kFixed = 6;  // the channels before z1
-static_assert(std::size(kChannels) == kFixed + kMaxInternal);
+constexpr std::size_t kBonding = kFixed + kMaxInternal;  // the first of the bonding field's
+static_assert(std::size(kChannels) == kBonding + 2);
 
 }  // namespace
 
 std::span<const ChannelInfo> channels() {
   return std::span<const ChannelInfo>(kChannels).first(kFixed);
+}
+
+std::span<const ChannelInfo> bonding_channels() {
+  return std::span<const ChannelInfo>(kChannels).subspan(kBonding);
 }
 
 Channel internal_channel(std::size_t i) {
@@ -42,7 +53,7 @@ Channel internal_channel(std::size_t i) {
 
 std::optional<std::size_t> internal_index(Channel channel) {
   const auto i = static_cast<std::size_t>(channel);
-  if (i < kFixed) return std::nullopt;
+  if (i < kFixed || i >= kBonding) return std::nullopt;
   return i - kFixed;
 }
 
@@ -80,6 +91,10 @@ double channel_value(const OutputRow& row, Channel channel) {
     case Channel::z3:
     case Channel::z4:
       break;
+    case Channel::beta:
+      return row.internal[kBondFraction];
+    case Channel::D:
+      return row.internal[kBondEnergy];
   }
   return row.internal[*internal_index(channel)];
 }

@@ -14,8 +14,9 @@
 namespace impact {
 
 // z1..z4: the model's internal variables (model.hpp), named in a scene and a CSV header by the
-// model's names; channels() lists the others.
-enum class Channel { u, v, N, E, iterations, N_scheme, z1, z2, z3, z4 };
+// model's names; beta and D: a bonded model's fraction of active bonds and the energy spent on
+// them (bonding.hpp), kept in the state's z as model.hpp says; channels() lists the first six.
+enum class Channel { u, v, N, E, iterations, N_scheme, z1, z2, z3, z4, beta, D };
 
 struct ChannelInfo {
   Channel channel;
@@ -25,6 +26,8 @@ struct ChannelInfo {
 
 // The channels every model has (u, v, N, E, iterations, N_scheme).
 std::span<const ChannelInfo> channels();
+// The bonding field's channels, beta and D, which a bonded model has (model.hpp).
+std::span<const ChannelInfo> bonding_channels();
 // The channel of the model's internal variable i (i < kMaxInternal), and which one a channel is.
 Channel internal_channel(std::size_t i);
 std::optional<std::size_t> internal_index(Channel channel);

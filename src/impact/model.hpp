@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "impact/bonding.hpp"
+
 namespace impact {
 
 // Position and velocity of the particle at one grid time t_l = l h.
@@ -71,7 +73,19 @@ struct Model {
   // -k (u - u_eq) - c v added to it (LinearSpring); not with an expression
   std::optional<LinearSpring> linear{};
   std::vector<InternalVariable> internal{};  // at most kMaxInternal; empty for the paper's model
+  // The bonding field (bonding.hpp) as the scene gives it; it acts where bonded() says so.
+  std::optional<Bonding> bonding{};
 };
+
+// Whether the model has a bonding field that acts (gamma beta0^2 != 0): where it does not, every
+// method runs the paper's model, bit for bit as without [bonding].
+inline bool bonded(const Model& model) {
+  return model.bonding && bonds_act(*model.bonding);
+}
+
+// Where a bonded model's state keeps beta and D (the energy spent on bonds): z[0] and z[1] of
+// StateWithInternal (a bonding field and [[internal]] variables are not taken together).
+inline constexpr std::size_t kBondFraction = 0, kBondEnergy = 1;
 
 // f(t) = f: the case of the paper's Section 5 and of every closed form in this package.
 inline bool constant_force(const Model& model) {
@@ -94,6 +108,7 @@ std::string describe(const StateWithInternal& s);
 // The initial state of a model's internal variables beside the particle's.
 inline StateWithInternal with_internal(const Model& model, const State& s) {
   StateWithInternal full{s, {}};
+  if (bonded(model)) full.z[kBondFraction] = model.bonding->beta0;  // D(0) = 0
   for (std::size_t i = 0; i < model.internal.size() && i < kMaxInternal; ++i)
     full.z[i] = model.internal[i].initial;
   return full;
@@ -102,6 +117,14 @@ inline StateWithInternal with_internal(const Model& model, const State& s) {
 // Energy (3-1)/(4-5): E = v^2/2 - f u, for a constant force.
 inline double energy(const Model& model, const State& s) {
   return 0.5 * s.v * s.v - model.f * s.u;
+}
+
+// The same with the bonds' energy gamma beta^2 Phi(u - phi) (bonding.hpp), beta = z[kBondFraction],
+// for a bonded model; energy(model, s) for any other.
+inline double energy(const Model& model, const StateWithInternal& s) {
+  const double plain = energy(model, static_cast<const State&>(s));
+  if (!bonded(model)) return plain;
+  return plain + adhesive_energy(*model.bonding, s.z[kBondFraction], s.u - model.phi);
 }
 
 // What one step from t_l to t_{l+1} reports besides the new state.

@@ -27,12 +27,16 @@ constexpr int kSamples = 9;  // force samples per ODE step, ends included (ode_f
 // The integrator and what its right-hand side reads; on the heap, since the system's params point
 // here.
 struct OdeLaw::Gsl : Rk8pd {
-  Gsl(const ForceFunction* f, const InternalRates* r, double floor, const OdeSettings& s)
-      : Rk8pd(2 + (r ? r->size() : 0), s.atol, s.rtol, &Gsl::rhs, this),
+  Gsl(const ForceFunction* f, const InternalRates* r, const std::optional<Bonding>& b,
+      double floor, const OdeSettings& s)
+      : Rk8pd(2 + (r ? r->size() : 0) + (b ? 2 : 0), s.atol, s.rtol, &Gsl::rhs, this),
         force(f),
         rates(r),
+        bonds(b),
+        bond_at(2 + (r ? r->size() : 0)),
         phi(floor) {}
-  // y = (u - phi, v, z): y' = (v, f(t, u, v, z), g(t, u, v, z)).
+  // y = (u - phi, v, z, ln beta, D): y' = (v, f(t, u, v, z) - gamma beta^2 R(u - phi),
+  // g(t, u, v, z), -(gamma R^2 - eps_a)_+, 2 gamma beta^2 Phi (gamma R^2 - eps_a)_+) (bonding.hpp).
   static int rhs(double t, const double y[], double dydt[], void* self) {
     auto* g = static_cast<Gsl*>(self);
     dydt[0] = y[1];
@@ -42,6 +46,13 @@ struct OdeLaw::Gsl : Rk8pd {
         g->force->set_internal(g->rates->evaluate(t, s, y + 2, dydt + 2));
       }
       dydt[1] = g->force->at(t, s);
+      if (g->bonds) {
+        const double beta = std::exp(y[g->bond_at + kBondFraction]);
+        const double excess = damage_excess(*g->bonds, y[0]);
+        dydt[1] -= adhesive_pull(*g->bonds, beta, y[0]);
+        dydt[g->bond_at + kBondFraction] = -excess;
+        dydt[g->bond_at + kBondEnergy] = 2.0 * adhesive_energy(*g->bonds, beta, y[0]) * excess;
+      }
     } catch (...) {
       return g->failed();
     }
@@ -50,6 +61,8 @@ struct OdeLaw::Gsl : Rk8pd {
 
   const ForceFunction* force;
   const InternalRates* rates;  // nullptr without internal variables
+  std::optional<Bonding> bonds;  // a copy: the law that owns this moves, the heap does not
+  std::size_t bond_at;         // where ln beta is in y
   double phi;
 };
 
@@ -59,11 +72,26 @@ OdeLaw::OdeLaw(const Model& model, const OdeSettings& settings)
       phi_(model.phi),
       rest_{model.phi, 0.0},
       settings_(settings),
-      gsl_(std::make_unique<Gsl>(force_.get(), rates_.get(), phi_, settings)),
-      z_a_(with_internal(model, {}).z),
-      z_b_(z_a_),
-      internal_count_(model.internal.size()) {
-  if (internal_count_ > 0) floor_.emplace(model, settings.rtol, settings.atol, settings.max_step);
+      internal_count_(model.internal.size() + (bonded(model) ? 2 : 0)),
+      rate_count_(model.internal.size()) {
+  if (bonded(model)) bonds_ = *model.bonding;
+  gsl_ = std::make_unique<Gsl>(force_.get(), rates_.get(), bonds_, phi_, settings);
+  set_internal(with_internal(model, {}).z);
+  if (rate_count_ > 0) floor_.emplace(model, settings.rtol, settings.atol, settings.max_step);
+}
+
+void OdeLaw::set_internal(const std::array<double, kMaxInternal>& z) {
+  z_a_ = z_b_ = z;
+  if (bonds_) z_a_[rate_count_ + kBondFraction] = std::log(z[rate_count_ + kBondFraction]);
+  z_b_ = z_a_;
+}
+
+void OdeLaw::keep_bonds_monotone(std::array<double, kMaxInternal>& z) const {
+  if (!bonds_) return;
+  double& log_beta = z[rate_count_ + kBondFraction];
+  double& spent = z[rate_count_ + kBondEnergy];
+  log_beta = std::fmin(log_beta, z_a_[rate_count_ + kBondFraction]);
+  spent = std::fmax(spent, z_a_[rate_count_ + kBondEnergy]);
 }
 
 OdeLaw::OdeLaw(const OdeLaw& other)
@@ -72,7 +100,6 @@ OdeLaw::OdeLaw(const OdeLaw& other)
       phi_(other.phi_),
       rest_(other.rest_),
       settings_(other.settings_),
-      gsl_(std::make_unique<Gsl>(force_.get(), rates_.get(), phi_, settings_)),
       t_a_(other.t_a_),
       t_b_(other.t_b_),
       y_a_(other.y_a_),
@@ -80,8 +107,12 @@ OdeLaw::OdeLaw(const OdeLaw& other)
       z_a_(other.z_a_),
       z_b_(other.z_b_),
       internal_count_(other.internal_count_),
+      rate_count_(other.rate_count_),
+      bonds_(other.bonds_),
       floor_(other.floor_),
       on_floor_(other.on_floor_),
+      floor_from_(other.floor_from_),
+      z_floor_(other.z_floor_),
       bound_(other.bound_),
       certified_(other.certified_),
       checked_(other.checked_),
@@ -92,6 +123,7 @@ OdeLaw::OdeLaw(const OdeLaw& other)
       ode_ok_(other.ode_ok_),
       out_of_steps_(other.out_of_steps_),
       failed_status_(other.failed_status_) {
+  gsl_ = std::make_unique<Gsl>(force_.get(), rates_.get(), bonds_, phi_, settings_);
   gsl_->h_next = other.gsl_->h_next;
 }
 
@@ -108,7 +140,7 @@ void OdeLaw::start(double t, double gap, double v, bool at_crossing) {
   if (internal_count_ > 0) {
     // Where the flight starts: on the floor, or inside the ODE step it left (an impact's launch);
     // the first start keeps the initial values.
-    if (on_floor_ || t_b_ > t_a_) z_b_ = internal_at(t);
+    if (on_floor_ || t_b_ > t_a_) z_b_ = floor_internal(t);
     z_a_ = z_b_;
     on_floor_ = false;
   }
@@ -152,10 +184,11 @@ void OdeLaw::dense(double t, State& state, std::array<double, kMaxInternal>& z) 
   if (status != GSL_SUCCESS) return;
   state = {y[0], y[1]};
   std::copy(y.begin() + 2, y.begin() + 2 + static_cast<std::ptrdiff_t>(n - 2), z.begin());
+  keep_bonds_monotone(z);
 }
 
 std::array<double, kMaxInternal> OdeLaw::floor_internal(double t) const {
-  if (on_floor_ && t >= floor_->origin()) return floor_->at(t);
+  if (on_floor_ && t >= floor_from_) return floor_ ? floor_->at(t) : z_floor_;
   State y;
   std::array<double, kMaxInternal> z;
   dense(t, y, z);
@@ -163,7 +196,10 @@ std::array<double, kMaxInternal> OdeLaw::floor_internal(double t) const {
 }
 
 std::array<double, kMaxInternal> OdeLaw::internal_at(double t) const {
-  return internal_count_ > 0 ? floor_internal(t) : z_b_;
+  if (internal_count_ == 0) return z_b_;
+  std::array<double, kMaxInternal> z = floor_internal(t);
+  if (bonds_) z[rate_count_ + kBondFraction] = std::exp(z[rate_count_ + kBondFraction]);
+  return z;
 }
 
 void OdeLaw::reach_floor(double t) {
@@ -171,7 +207,9 @@ void OdeLaw::reach_floor(double t) {
   State y;
   std::array<double, kMaxInternal> z;
   dense(t, y, z);
-  floor_->start(t, z);
+  if (floor_) floor_->start(t, z);
+  floor_from_ = t;
+  z_floor_ = z;
   on_floor_ = true;
 }
 
@@ -199,10 +237,11 @@ void OdeLaw::take_step() {
   t_b_ = t;
   y_b_ = {y[0], y[1]};
   std::copy(y.begin() + 2, y.end(), z_b_.begin());
+  keep_bonds_monotone(z_b_);
   // The step's force bound (ode_flight.hpp).
   std::array<double, kSamples> f{};
   double largest = 0, change = 0;
-  const bool state = force_->state_dependent();
+  const bool state = force_->state_dependent() || bonds_;
   for (int i = 0; i < kSamples; ++i) {
     const double t_i = t_a_ + (t_b_ - t_a_) * i / (kSamples - 1);
     if (!state) {

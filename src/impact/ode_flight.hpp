@@ -49,12 +49,21 @@
 // z of whichever holds at t. The chatter window's force samples take z on the floor too (not
 // certified: z moves by at most W sup |g| inside the window, which its bound does not see).
 //
+// The bonding field (bonding.hpp): the pull -gamma beta^2 R(g) joins f in the flight, and the
+// flight carries ln beta and D (the energy spent on bonds) after the internal variables:
+// (ln beta)' = -(gamma R^2 - eps_a)_+ keeps beta > 0, and D' = 2 gamma beta^2 Phi(g) (gamma R^2 -
+// eps_a)_+. An accepted step's ln beta is clamped to at most its start's and D to at least it, so
+// that beta never rises and D never falls through the integrator's error (rk8pd's weights are not
+// all positive). On the floor R(0) = 0: no pull, no damage, beta and D stay as they arrived.
+// internal_at(t) gives beta, not its logarithm (z[kBondFraction], model.hpp).
+//
 // The end of the run. f is evaluated on [t0, end] only (OdeSettings::end; a force such as
 // sqrt(2 - t) is defined up to T = 2 and no further): the ODE steps, the lift-off scan and the
 // force's rate stop there, and a chatter window that reaches past it is not certified.
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -100,17 +109,21 @@ class OdeLaw {
 
   // f on the floor at rest, f(t, phi, 0) (and z on the floor): f(t) for a force of t alone.
   double force(double t) const {
-    if (internal_count_ > 0) force_->set_internal(floor_internal(t));
+    if (rate_count_ > 0) force_->set_internal(floor_internal(t));
     return force_->at(t, rest_);
   }
-  // f at the gap and velocity y = (u - phi, v) and the internal variables z.
+  // f at the gap and velocity y = (u - phi, v) and the internal variables z (ln beta for the
+  // bonds), the bonds' pull included: the particle's acceleration in flight.
   double force_on(double t, const State& y, const std::array<double, kMaxInternal>& z) const {
-    if (internal_count_ > 0) force_->set_internal(z);
-    return force_->at(t, {phi_ + y.u, y.v});
+    if (rate_count_ > 0) force_->set_internal(z);
+    const double f = force_->at(t, {phi_ + y.u, y.v});
+    if (!bonds_) return f;
+    return f - adhesive_pull(*bonds_, std::exp(z[rate_count_ + kBondFraction]), y.u);
   }
-  // The internal variables the next start() begins the flight with (the run's initial values).
-  void set_internal(const std::array<double, kMaxInternal>& z) { z_a_ = z_b_ = z; }
-  // z at t, in flight (t in the current ODE step) or on the floor (see above).
+  // The internal variables the next start() begins the flight with (the run's initial values;
+  // beta, not its logarithm).
+  void set_internal(const std::array<double, kMaxInternal>& z);
+  // z at t, in flight (t in the current ODE step) or on the floor (see above); beta for the bonds.
   std::array<double, kMaxInternal> internal_at(double t) const;
   double rate(double t) const;
   Lift lift_after(double t) const;
@@ -126,7 +139,10 @@ class OdeLaw {
   void take_step();
   // The state and internal variables at t in the current ODE step.
   void dense(double t, State& y, std::array<double, kMaxInternal>& z) const;
+  // z at t as the ODE carries it (ln beta for the bonds).
   std::array<double, kMaxInternal> floor_internal(double t) const;
+  // Keeps the bonds' beta from rising and D from falling over the current step (see above).
+  void keep_bonds_monotone(std::array<double, kMaxInternal>& z) const;
   // A contact was found at t: the particle is on the floor from there (internal variables).
   void reach_floor(double t);
   std::optional<Contact> at_end();
@@ -143,9 +159,13 @@ class OdeLaw {
   double t_a_ = 0, t_b_ = 0;
   State y_a_, y_b_;
   std::array<double, kMaxInternal> z_a_{}, z_b_{};  // the internal variables at t_a_ and t_b_
-  std::size_t internal_count_ = 0;
-  std::optional<FloorInternal> floor_;  // with internal variables
-  bool on_floor_ = false;               // z is floor_'s from its origin on
+  std::size_t internal_count_ = 0;       // the ODE's components after (u - phi, v)
+  std::size_t rate_count_ = 0;           // of which the model's internal variables
+  std::optional<Bonding> bonds_;         // a bonding field that acts (bonded(), model.hpp)
+  std::optional<FloorInternal> floor_;   // with internal variables
+  bool on_floor_ = false;                // z is floor_'s (or z_floor_) from floor_from_ on
+  double floor_from_ = 0;                // the time the particle reached the floor
+  std::array<double, kMaxInternal> z_floor_{};  // z there (the bonds' stay so on the floor)
   double bound_ = 0, certified_ = 0, checked_ = 0;
   bool departing_ = false, at_crossing_ = false;
   long ode_steps_ = 0, ode_step_limit_ = std::numeric_limits<long>::max();

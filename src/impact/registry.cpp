@@ -51,6 +51,7 @@ const MethodInfo kMethods[] = {
      .can = {.restitution = true,
              .harmonic_force = true,
              .linear_force = true,
+             .bonding = true,
              .reference = true,
              .energy_bound = true,
              .exact_events = true}},
@@ -63,6 +64,7 @@ const MethodInfo kMethods[] = {
              .state_force = true,
              .linear_force = true,
              .internal_variables = true,
+             .bonding = true,
              .reference = true,
              .exact_events = true}},
     {.name = "direct_located",
@@ -117,6 +119,7 @@ std::string not_honoured(const MethodInfo& method, const Model& model) {
     return "it takes no linear force of the state (force.linear)";
   if (!method.can.internal_variables && !model.internal.empty())
     return "it does not follow internal variables ([[internal]])";
+  if (!method.can.bonding && bonded(model)) return "it takes no bonding field ([bonding])";
   return {};
 }
 
@@ -148,6 +151,9 @@ AnyStepper make_stepper(const Model& given, double h, const MethodParams& params
   if (!method.can.internal_variables && !model.internal.empty())
     throw std::invalid_argument("method '" + std::string(method.name) +
                                 "' does not follow internal variables: [[internal]] is given");
+  if (!method.can.bonding && bonded(model))
+    throw std::invalid_argument("method '" + std::string(method.name) +
+                                "' takes no bonding field: [bonding] is given");
   if ((std::holds_alternative<DirectParams>(params) ||
        std::holds_alternative<FbNewtonParams>(params)) &&
       !scheme_step_representable(h))
@@ -183,9 +189,12 @@ AnyStepper make_stepper(const Model& given, double h, const MethodParams& params
           return MoreauJeanTimeDependent(model, h, p);
         }
         if constexpr (std::is_same_v<Params, PenaltyParams>) return Penalty(model, h, p);
-        if constexpr (std::is_same_v<Params, ExactParams>) return ExactStepper(model, h, p);
+        if constexpr (std::is_same_v<Params, ExactParams>) {
+          if (bonded(model)) return ExactBonded(model, h, p);
+          return ExactStepper(model, h, p);
+        }
         if constexpr (std::is_same_v<Params, EventDrivenParams>) {
-          if (!model.internal.empty()) return EventDrivenInternal(model, h, p);
+          if (!model.internal.empty() || bonded(model)) return EventDrivenInternal(model, h, p);
           return EventDriven(model, h, p);
         }
         if constexpr (std::is_same_v<Params, DirectLocatedParams>)

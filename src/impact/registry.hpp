@@ -13,6 +13,7 @@
 #include "impact/direct_located.hpp"
 #include "impact/event_driven.hpp"
 #include "impact/exact.hpp"
+#include "impact/exact_bonded.hpp"
 #include "impact/fb_newton.hpp"
 #include "impact/internal_stepper.hpp"
 #include "impact/model.hpp"
@@ -38,7 +39,7 @@ using MoreauJeanInternal = WithInternal<MoreauJeanTimeDependent>;
 using AnyStepper =
     std::variant<Direct, FbNewton, MoreauJean, Penalty, ExactStepper, EventDriven, DirectHarmonic,
                  DirectTimeDependent, MoreauJeanTimeDependent, DirectAsPrinted, DirectLocated,
-                 DirectInternal, MoreauJeanInternal, EventDrivenInternal>;
+                 DirectInternal, MoreauJeanInternal, EventDrivenInternal, ExactBonded>;
 static_assert([]<class... S>(std::variant<S...>*) { return (Stepper<S> && ...); }(
                   static_cast<AnyStepper*>(nullptr)),
               "every method's stepper has the interface of stepper.hpp");
@@ -54,6 +55,7 @@ struct Capabilities {
   bool state_force = false;         // force.expression reads u or v: f(t, u, v)
   bool linear_force = false;        // force.linear: -k (u - u_eq) - c v beside f
   bool internal_variables = false;  // [[internal]]: z' = g(t, u, v, z), read by the force
+  bool bonding = false;             // [bonding]: adhesion with damage (bonding.hpp), beta and D
   bool iterations_channel = false;  // output.channels "iterations": Newton iterations, ODE steps
   // output.channels "N_scheme": the paper's scheme solves (4-3) for N^l, which Newton's law does
   // not change (channels.cpp)

@@ -23,8 +23,10 @@ PointSummary finish_summary(const SummaryLanes<double>& lanes, const Model& mode
 }
 
 std::optional<EnsembleKind> ensemble_kind(const Scene& scene) {
-  // The ensemble takes a constant f only, and no internal variables (their steppers carry z).
-  if (!constant_force(scene.model) || !scene.model.internal.empty()) return std::nullopt;
+  // The ensemble takes a constant f only, and no internal variables or bonds (their steppers
+  // carry z).
+  if (!constant_force(scene.model) || !scene.model.internal.empty() || bonded(scene.model))
+    return std::nullopt;
   if (const auto* direct = std::get_if<DirectParams>(&scene.method))
     if (direct->free_flight == FreeFlightForm::closed_form)
       return EnsembleKind{EnsembleMethod::direct, 0.5};

@@ -16,6 +16,7 @@
 
 #include "impact/format.hpp"
 #include "impact/work_energy.hpp"
+#include "scene/bonding_keys.hpp"
 #include "scene/force_keys.hpp"
 #include "scene/internal_keys.hpp"
 #include "scene/key_reader.hpp"
@@ -42,6 +43,8 @@ void read_channels(const KeyReader& r, const toml::node& channels, const MethodI
   std::vector<Channel> known;
   for (const ChannelInfo& c : impact::channels()) known.push_back(c.channel);
   for (std::size_t i = 0; i < model.internal.size(); ++i) known.push_back(internal_channel(i));
+  if (bonded(model))
+    for (const ChannelInfo& c : bonding_channels()) known.push_back(c.channel);
   for (Channel c : known)
     if (can_write(method, c)) allowed.push_back(channel_name(c, model));
   for (const toml::node& item : *list) {
@@ -92,6 +95,7 @@ Scene build(const toml::table& root, const Origins& origins) {
 
   read_internal(r, root, scene);
   check_force(r, root, scene);
+  check_bonding(r, root, scene);
   const MethodInfo& method = method_info(scene.method);
   if (const toml::node* channels = root.at_path("output.channels").node())
     read_channels(r, *channels, method, scene.model, scene.output);

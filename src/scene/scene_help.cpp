@@ -132,11 +132,12 @@ std::string scene_help(std::size_t width) {
     out += pad("  " + std::string(m.name), kNameEnd) + wrap(m.summary, width, kNameEnd) + "\n";
 
   out += "\nChannels (output.channels; the CSV's header is t, then the channels):\n";
-  for (const ChannelInfo& c : channels()) {
-    std::string meaning(c.meaning);
-    if (c.needs) meaning += " (" + join(methods_with(c.needs)) + " only)";
-    out += pad("  " + std::string(c.name), kNameEnd) + wrap(meaning, width, kNameEnd) + "\n";
-  }
+  for (const auto& list : {channels(), bonding_channels()})
+    for (const ChannelInfo& c : list) {
+      std::string meaning(c.meaning);
+      if (c.needs) meaning += " (" + join(methods_with(c.needs)) + " only)";
+      out += pad("  " + std::string(c.name), kNameEnd) + wrap(meaning, width, kNameEnd) + "\n";
+    }
   out += pad("  <name>", kNameEnd) +
          wrap(
              "an internal variable of [[internal]], by its name (written by default after u "

@@ -75,6 +75,8 @@ std::span<const KeySpec> scene_keys();
 std::span<const KeySpec> method_keys();
 // The keys of [force] (force_keys.cpp), which scene_keys() includes.
 std::span<const KeySpec> force_keys();
+// The keys of [bonding] (bonding_keys.cpp), which scene_keys() includes.
+std::span<const KeySpec> bonding_keys();
 // The keys of each [[internal]] table (internal_keys.cpp): name, initial, rate (table "internal").
 std::span<const KeySpec> internal_keys();
 // The internal variable's key a --set, --unset or --vary names as internal.NAME.key: the variable's

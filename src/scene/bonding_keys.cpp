@@ -1,0 +1,105 @@
+#include "scene/bonding_keys.hpp"
+
+#include <string>
+
+#include "impact/exact_bonded.hpp"
+#include "impact/format.hpp"
+#include "scene/toml_text.hpp"
+
+namespace impact {
+namespace {
+
+// The bonding field, created by each of its keys as force.linear is.
+Bonding& bonding(Scene& s) {
+  if (!s.model.bonding) s.model.bonding.emplace();
+  return *s.model.bonding;
+}
+
+KeyValue bonding_value(const Scene& s, double Bonding::*member) {
+  return s.model.bonding ? KeyValue(*s.model.bonding.*member) : KeyValue();
+}
+
+constexpr std::string_view kOnly = "a bonding field";
+
+// Every key is required once [bonding] is given: a bond's data has no neutral default but gamma's.
+const KeySpec kBondingKeys[] = {
+    {.table = "bonding",
+     .key = "gamma",
+     .type = KeyType::number,
+     .range = {.lo = 0.0},
+     .required = true,
+     .also = "0: no bonding field, the paper's model bit for bit",
+     .only_some = kOnly,
+     .only_with = &Capabilities::bonding,
+     .meaning = "adhesion stiffness: the pull is gamma beta^2 min(u - phi, L)",
+     .get = [](const Scene& s) { return bonding_value(s, &Bonding::gamma); },
+     .set = [](Scene& s, const KeyValue& v) { bonding(s).gamma = std::get<double>(v); }},
+    {.table = "bonding",
+     .key = "L",
+     .type = KeyType::number,
+     .range = {.lo = 0.0, .lo_open = true},
+     .required = true,
+     .only_some = kOnly,
+     .only_with = &Capabilities::bonding,
+     .meaning = "bond length: the gap past which the pull saturates at gamma beta^2 L",
+     .get = [](const Scene& s) { return bonding_value(s, &Bonding::L); },
+     .set = [](Scene& s, const KeyValue& v) { bonding(s).L = std::get<double>(v); }},
+    {.table = "bonding",
+     .key = "eps_a",
+     .type = KeyType::number,
+     .range = {.lo = 0.0},
+     .required = true,
+     .only_some = kOnly,
+     .only_with = &Capabilities::bonding,
+     .meaning = "the energy density gamma R^2 below which bonds do not break: beta' = "
+                "-beta (gamma R^2 - eps_a)_+",
+     .get = [](const Scene& s) { return bonding_value(s, &Bonding::eps_a); },
+     .set = [](Scene& s, const KeyValue& v) { bonding(s).eps_a = std::get<double>(v); }},
+    {.table = "bonding",
+     .key = "beta0",
+     .type = KeyType::number,
+     .range = {.lo = 0.0, .hi = 1.0},
+     .required = true,
+     .also = "0: no bonding field, the paper's model bit for bit",
+     .only_some = kOnly,
+     .only_with = &Capabilities::bonding,
+     .meaning = "the fraction of active bonds at t = 0",
+     .get = [](const Scene& s) { return bonding_value(s, &Bonding::beta0); },
+     .set = [](Scene& s, const KeyValue& v) { bonding(s).beta0 = std::get<double>(v); }},
+};
+
+}  // namespace
+
+std::span<const KeySpec> bonding_keys() {
+  return kBondingKeys;
+}
+
+void check_bonding(const KeyReader& r, const toml::table& root, Scene& scene) {
+  if (!bonded(scene.model)) return;
+  const std::string where = "[bonding]";
+  if (!scene.model.internal.empty())
+    r.fail_table("bonding", where,
+                 "is not taken together with [[internal]] (a run's internal state holds beta "
+                 "and D); write the bonds as [[internal]] data, or leave [[internal]] out");
+  if (!constant_force(scene.model))
+    r.fail_table("bonding", where,
+                 "is taken with a constant force (force.f) only: the energy E of a bonded run "
+                 "with f(t) is not built yet");
+  const MethodInfo& method = method_info(scene.method);
+  const toml::node& name = *root.get("method")->as_table()->get("name");
+  if (!method.can.bonding) {
+    std::string what = "'";
+    what += method.name;
+    what += "' takes no bonding field, and [bonding] gives gamma beta0^2 != 0: use ";
+    what += join(methods_with(&Capabilities::bonding));
+    what += " (or bonding.gamma = 0 for the paper's model)";
+    r.fail_value("method", "name", name, what);
+  }
+  if (std::holds_alternative<ExactParams>(scene.method))
+    if (const auto why = no_damage_well_refusal(scene.model, scene.initial))
+      r.fail_value("method", "name", name, *why);
+  // Written by default, after u and v (output.channels chooses otherwise).
+  for (const ChannelInfo& c : bonding_channels()) scene.output.channels.push_back(c.channel);
+}
+
+}  // namespace impact
