@@ -53,6 +53,15 @@ inline double adhesive_pull(const Bonding& b, double beta, double gap) {
   return b.gamma * beta * beta * bond_reach(b, gap);
 }
 
+// beta from the logarithm ln(beta / beta0) that an ODE carries (exactly beta0 while it is 0, i.e.
+// while no bond broke), and back.
+inline double bond_fraction(const Bonding& b, double log_ratio) {
+  return b.beta0 * std::exp(log_ratio);
+}
+inline double bond_log_ratio(const Bonding& b, double beta) {
+  return std::log(beta / b.beta0);
+}
+
 // (gamma R^2 - eps_a)_+: (ln beta)' = -damage_excess in the product form.
 inline double damage_excess(const Bonding& b, double gap) {
   const double r = bond_reach(b, gap);

@@ -33,7 +33,7 @@ const ChannelInfo kChannels[] = {
      "is E(0) less the impacts' losses ([bonding])",
      &Capabilities::bonding},
 };
-constexpr std::size_t kFixed = 6;  // the channels before z1
+constexpr std::size_t kFixed = 6;                        // the channels before z1
 constexpr std::size_t kBonding = kFixed + kMaxInternal;  // the first of the bonding field's
 static_assert(std::size(kChannels) == kBonding + 2);
 

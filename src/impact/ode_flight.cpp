@@ -27,15 +27,15 @@ constexpr int kSamples = 9;  // force samples per ODE step, ends included (ode_f
 // The integrator and what its right-hand side reads; on the heap, since the system's params point
 // here.
 struct OdeLaw::Gsl : Rk8pd {
-  Gsl(const ForceFunction* f, const InternalRates* r, const std::optional<Bonding>& b,
-      double floor, const OdeSettings& s)
+  Gsl(const ForceFunction* f, const InternalRates* r, const std::optional<Bonding>& b, double floor,
+      const OdeSettings& s)
       : Rk8pd(2 + (r ? r->size() : 0) + (b ? 2 : 0), s.atol, s.rtol, &Gsl::rhs, this),
         force(f),
         rates(r),
         bonds(b),
         bond_at(2 + (r ? r->size() : 0)),
         phi(floor) {}
-  // y = (u - phi, v, z, ln beta, D): y' = (v, f(t, u, v, z) - gamma beta^2 R(u - phi),
+  // y = (u - phi, v, z, ln(beta/beta0), D): y' = (v, f(t, u, v, z) - gamma beta^2 R(u - phi),
   // g(t, u, v, z), -(gamma R^2 - eps_a)_+, 2 gamma beta^2 Phi (gamma R^2 - eps_a)_+) (bonding.hpp).
   static int rhs(double t, const double y[], double dydt[], void* self) {
     auto* g = static_cast<Gsl*>(self);
@@ -47,7 +47,7 @@ struct OdeLaw::Gsl : Rk8pd {
       }
       dydt[1] = g->force->at(t, s);
       if (g->bonds) {
-        const double beta = std::exp(y[g->bond_at + kBondFraction]);
+        const double beta = bond_fraction(*g->bonds, y[g->bond_at + kBondFraction]);
         const double excess = damage_excess(*g->bonds, y[0]);
         dydt[1] -= adhesive_pull(*g->bonds, beta, y[0]);
         dydt[g->bond_at + kBondFraction] = -excess;
@@ -60,9 +60,9 @@ struct OdeLaw::Gsl : Rk8pd {
   }
 
   const ForceFunction* force;
-  const InternalRates* rates;  // nullptr without internal variables
+  const InternalRates* rates;    // nullptr without internal variables
   std::optional<Bonding> bonds;  // a copy: the law that owns this moves, the heap does not
-  std::size_t bond_at;         // where ln beta is in y
+  std::size_t bond_at;           // where ln beta is in y
   double phi;
 };
 
@@ -82,7 +82,8 @@ OdeLaw::OdeLaw(const Model& model, const OdeSettings& settings)
 
 void OdeLaw::set_internal(const std::array<double, kMaxInternal>& z) {
   z_a_ = z_b_ = z;
-  if (bonds_) z_a_[rate_count_ + kBondFraction] = std::log(z[rate_count_ + kBondFraction]);
+  if (bonds_)
+    z_a_[rate_count_ + kBondFraction] = bond_log_ratio(*bonds_, z[rate_count_ + kBondFraction]);
   z_b_ = z_a_;
 }
 
@@ -198,7 +199,8 @@ std::array<double, kMaxInternal> OdeLaw::floor_internal(double t) const {
 std::array<double, kMaxInternal> OdeLaw::internal_at(double t) const {
   if (internal_count_ == 0) return z_b_;
   std::array<double, kMaxInternal> z = floor_internal(t);
-  if (bonds_) z[rate_count_ + kBondFraction] = std::exp(z[rate_count_ + kBondFraction]);
+  if (bonds_)
+    z[rate_count_ + kBondFraction] = bond_fraction(*bonds_, z[rate_count_ + kBondFraction]);
   return z;
 }
 

@@ -50,12 +50,13 @@
 // certified: z moves by at most W sup |g| inside the window, which its bound does not see).
 //
 // The bonding field (bonding.hpp): the pull -gamma beta^2 R(g) joins f in the flight, and the
-// flight carries ln beta and D (the energy spent on bonds) after the internal variables:
-// (ln beta)' = -(gamma R^2 - eps_a)_+ keeps beta > 0, and D' = 2 gamma beta^2 Phi(g) (gamma R^2 -
-// eps_a)_+. An accepted step's ln beta is clamped to at most its start's and D to at least it, so
-// that beta never rises and D never falls through the integrator's error (rk8pd's weights are not
-// all positive). On the floor R(0) = 0: no pull, no damage, beta and D stay as they arrived.
-// internal_at(t) gives beta, not its logarithm (z[kBondFraction], model.hpp).
+// flight carries ln(beta/beta0) and D (the energy spent on bonds) after the internal variables:
+// (ln beta)' = -(gamma R^2 - eps_a)_+ keeps beta > 0 (and beta0 exactly while no bond breaks), and
+// D' = 2 gamma beta^2 Phi(g) (gamma R^2 - eps_a)_+. An accepted step's ln beta is clamped to at
+// most its start's and D to at least it, so that beta never rises and D never falls through the
+// integrator's error (rk8pd's weights are not all positive). On the floor R(0) = 0: no pull, no
+// damage, beta and D stay as they arrived. internal_at(t) gives beta, not its logarithm
+// (z[kBondFraction], model.hpp).
 //
 // The end of the run. f is evaluated on [t0, end] only (OdeSettings::end; a force such as
 // sqrt(2 - t) is defined up to T = 2 and no further): the ODE steps, the lift-off scan and the
@@ -113,12 +114,12 @@ class OdeLaw {
     return force_->at(t, rest_);
   }
   // f at the gap and velocity y = (u - phi, v) and the internal variables z (ln beta for the
-  // bonds), the bonds' pull included: the particle's acceleration in flight.
+  // bonds, ln(beta/beta0)), the bonds' pull included: the particle's acceleration in flight.
   double force_on(double t, const State& y, const std::array<double, kMaxInternal>& z) const {
     if (rate_count_ > 0) force_->set_internal(z);
     const double f = force_->at(t, {phi_ + y.u, y.v});
     if (!bonds_) return f;
-    return f - adhesive_pull(*bonds_, std::exp(z[rate_count_ + kBondFraction]), y.u);
+    return f - adhesive_pull(*bonds_, bond_fraction(*bonds_, z[rate_count_ + kBondFraction]), y.u);
   }
   // The internal variables the next start() begins the flight with (the run's initial values;
   // beta, not its logarithm).
@@ -159,12 +160,12 @@ class OdeLaw {
   double t_a_ = 0, t_b_ = 0;
   State y_a_, y_b_;
   std::array<double, kMaxInternal> z_a_{}, z_b_{};  // the internal variables at t_a_ and t_b_
-  std::size_t internal_count_ = 0;       // the ODE's components after (u - phi, v)
-  std::size_t rate_count_ = 0;           // of which the model's internal variables
-  std::optional<Bonding> bonds_;         // a bonding field that acts (bonded(), model.hpp)
-  std::optional<FloorInternal> floor_;   // with internal variables
-  bool on_floor_ = false;                // z is floor_'s (or z_floor_) from floor_from_ on
-  double floor_from_ = 0;                // the time the particle reached the floor
+  std::size_t internal_count_ = 0;                  // the ODE's components after (u - phi, v)
+  std::size_t rate_count_ = 0;                      // of which the model's internal variables
+  std::optional<Bonding> bonds_;                // a bonding field that acts (bonded(), model.hpp)
+  std::optional<FloorInternal> floor_;          // with internal variables
+  bool on_floor_ = false;                       // z is floor_'s (or z_floor_) from floor_from_ on
+  double floor_from_ = 0;                       // the time the particle reached the floor
   std::array<double, kMaxInternal> z_floor_{};  // z there (the bonds' stay so on the floor)
   double bound_ = 0, certified_ = 0, checked_ = 0;
   bool departing_ = false, at_crossing_ = false;

@@ -96,8 +96,7 @@ double OdeLaw::rest_impulse(double a, double b) const {
   if (floor_ && on_floor_) floor_->forget_before(a);
   for (double x = a; x < b; x += settings_.max_step) {
     const double y = std::fmin(b, x + settings_.max_step);
-    value -=
-        rate_count_ > 0 ? controlled_integral(on_floor, x, y) : force_->integral(x, y, rest_);
+    value -= rate_count_ > 0 ? controlled_integral(on_floor, x, y) : force_->integral(x, y, rest_);
   }
   return value;
 }

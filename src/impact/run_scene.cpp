@@ -105,8 +105,9 @@ RunReport run_scene(const Scene& scene, AnyStepper& stepper, const RunOutputs& o
         [&](const OutputRow& r) {
           OutputRow row = r;
           if (energy) {
-            row.energy = work ? work->energy(row.state)
-                              : impact::energy(scene.model, StateWithInternal{row.state, row.internal});
+            row.energy =
+                work ? work->energy(row.state)
+                     : impact::energy(scene.model, StateWithInternal{row.state, row.internal});
             if (!std::isfinite(row.energy)) [[unlikely]]
               throw NumericalError("at t = " + round_trip(scene.grid.t(row.l)) +
                                    (work ? ": the energy v^2/2 - f(0) u(0) - W(t) overflows"
@@ -145,8 +146,8 @@ RunReport run_scene(const Scene& scene, AnyStepper& stepper, const RunOutputs& o
     if (work) report.point->energy_final = work->energy(report.point->final);
     // A bonded model's E^n holds the bonds' energy, beta from the final internal state (model.hpp).
     if (bonded(scene.model) && !work)
-      report.point->energy_final =
-          impact::energy(scene.model, StateWithInternal{report.point->final, report.point->internal_final});
+      report.point->energy_final = impact::energy(
+          scene.model, StateWithInternal{report.point->final, report.point->internal_final});
     if (rest_by_events) report.point->rest_time = rest_from_events;
   }
   if (errors) {

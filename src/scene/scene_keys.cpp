@@ -28,7 +28,7 @@ constexpr Range kPositive{.lo = 0.0, .lo_open = true};
 
 const TableSpec kTables[] = {
     {"initial", true}, {"floor", false}, {"force", false},  {"force.linear", false},
-    {"time", true},    {"method", true}, {"output", false},  {"bonding", false},
+    {"time", true},    {"method", true}, {"output", false}, {"bonding", false},
 };
 
 // Required keys have no default; an optional key's default is the plain struct's (Scene{}).
@@ -119,7 +119,8 @@ std::span<const TableSpec> scene_tables() {
   return kTables;
 }
 
-// The [force] keys are force_keys.cpp's, the [bonding] keys bonding_keys.cpp's; each table's keys in the order of kTables.
+// The [force] keys are force_keys.cpp's, the [bonding] keys bonding_keys.cpp's; each table's keys
+// in the order of kTables.
 std::span<const KeySpec> scene_keys() {
   static const std::vector<KeySpec> keys = [] {
     std::vector<KeySpec> all;
@@ -127,8 +128,7 @@ std::span<const KeySpec> scene_keys() {
       for (const KeySpec& k : kKeys)
         if (k.table == t.name) all.push_back(k);
       if (t.name == "force") all.insert(all.end(), force_keys().begin(), force_keys().end());
-      if (t.name == "bonding")
-        all.insert(all.end(), bonding_keys().begin(), bonding_keys().end());
+      if (t.name == "bonding") all.insert(all.end(), bonding_keys().begin(), bonding_keys().end());
     }
     return all;
   }();
