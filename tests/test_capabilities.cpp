@@ -48,6 +48,12 @@ const std::vector<Feature> kFeatures = {
      "--unset force.f --set 'force.expression=\"-9.80665 - 5 * z\"' --set "
      "'output.channels=[\"u\",\"v\"]'",
      "--unset force.f --set 'force.expression=\"-9.80665\"'", "method.name", "si.toml"},
+    // A bonding field whose bonds neither break nor saturate (so exact takes it): the rows gain
+    // beta and D, and the pull changes u and v.
+    {"a bonding field", &impact::Capabilities::bonding,
+     "--set bonding.gamma=100 --set bonding.L=1e6 --set bonding.eps_a=1e6 --set bonding.beta0=1 "
+     "--set 'output.channels=[\"u\",\"v\"]'",
+     "", "method.name"},
 };
 
 const std::string kInternal = "[[internal]]\nname = \"z\"\ninitial = 1.0\nrate = \"-z\"\n";
@@ -82,11 +88,13 @@ TEST_CASE("capabilities: every method honours or refuses every feature, as its t
 
 TEST_CASE("capabilities: the table", "[capabilities]") {
   // Restitution, Harmonic force, Expression of t, force of the State, Linear force, internal
-  // Variables, Iterations channel, reFerence, energy Bound, exact eVents.
+  // Variables, Adhesion (a bonding field), Iterations channel, reFerence, energy Bound, exact
+  // eVents.
   const std::vector<std::pair<std::string, std::string>> rows = {
-      {"direct", "RHESLZ--B-"},         {"fb_newton", "RHE---I-B-"}, {"moreau_jean", "RHESLZ----"},
-      {"penalty", "-HE---I---"},        {"exact", "RH--L--FBV"},     {"event_driven", "RHESLZ-F-V"},
-      {"direct_located", "RHE-------"},
+      {"direct", "RHESLZ---B-"},         {"fb_newton", "RHE----I-B-"},
+      {"moreau_jean", "RHESLZ-----"},    {"penalty", "-HE----I---"},
+      {"exact", "RH--L-A-FBV"},          {"event_driven", "RHESLZA-F-V"},
+      {"direct_located", "RHE--------"},
   };
   const auto row = [](const impact::Capabilities& c) {
     std::string r;
@@ -96,6 +104,7 @@ TEST_CASE("capabilities: the table", "[capabilities]") {
     r += c.state_force ? 'S' : '-';
     r += c.linear_force ? 'L' : '-';
     r += c.internal_variables ? 'Z' : '-';
+    r += c.bonding ? 'A' : '-';
     r += c.iterations_channel ? 'I' : '-';
     r += c.reference ? 'F' : '-';
     r += c.energy_bound ? 'B' : '-';

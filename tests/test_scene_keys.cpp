@@ -72,7 +72,7 @@ TEST_CASE("keys: an error in a --set names the --set, not the file", "[keys]") {
 TEST_CASE("keys: a mistyped table, key, method or name gets a suggestion", "[keys]") {
   CHECK_SCENE_ERROR(parse(kBase + "[flor]\ncor = 0.5\n"),
                     Contains("unknown table (allowed: initial, floor, force, time, method, "
-                             "output, internal); did you mean floor?"));
+                             "output, bonding, internal); did you mean floor?"));
   CHECK_SCENE_ERROR(parse(kInitial + "[time]\nT = 10.0\nh = 0.001\nhh = 0.1\n" + kDirect),
                     Contains("time.hh = 0.1: unknown key (allowed in [time]: T, h); did you mean "
                              "time.h?"));

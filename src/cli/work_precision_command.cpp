@@ -282,6 +282,12 @@ int run_work_precision_command(const WorkPrecisionCommandOptions& o) {
   const auto start = Clock::now();
   const Run loaded = load_run(o.scene, o.sets, {});
   const Scene& scene = loaded.scene;
+  // Its time-steppers and its reference do not follow a bonding field yet.
+  if (bonded(scene.model))
+    throw SceneError(o.scene +
+                     ": [bonding]: work-precision sweeps time-steppers over h against a "
+                     "reference, and neither takes a bonding field yet (exact and event_driven "
+                     "run it with impact run)");
   const std::vector<std::string> names = o.methods.empty() ? default_methods(scene.model, o.quiet)
                                                            : parse_methods(o.methods, scene.model);
   const std::vector<double> steps = parse_steps(o.steps, scene.T);

@@ -17,12 +17,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace impact {
 
 struct Bonding {
   double gamma = 0.0;  // adhesion stiffness, per unit time squared (>= 0)
-  double L = 1.0;      // bond length: the pull saturates at gap L (> 0)
+  // bond length: the pull saturates at gap L (> 0); infinity: never
+  double L = std::numeric_limits<double>::infinity();
   double eps_a = 0.0;  // energy density below which bonds do not break (>= 0)
   double beta0 = 1.0;  // the fraction of active bonds at t = 0, in [0, 1]
 };

@@ -1,5 +1,6 @@
 #include "scene/bonding_keys.hpp"
 
+#include <cmath>
 #include <string>
 
 #include "impact/exact_bonded.hpp"
@@ -16,18 +17,18 @@ Bonding& bonding(Scene& s) {
 }
 
 KeyValue bonding_value(const Scene& s, double Bonding::*member) {
-  return s.model.bonding ? KeyValue(*s.model.bonding.*member) : KeyValue();
+  if (!s.model.bonding || std::isinf(*s.model.bonding.*member)) return KeyValue();
+  return *s.model.bonding.*member;
 }
 
 constexpr std::string_view kOnly = "a bonding field";
 
-// Every key is required once [bonding] is given: a bond's data has no neutral default but gamma's.
+// Left out: gamma = 0 (no field), L none (no saturation, R(g) = g), eps_a = 0, beta0 = 1.
 const KeySpec kBondingKeys[] = {
     {.table = "bonding",
      .key = "gamma",
      .type = KeyType::number,
      .range = {.lo = 0.0},
-     .required = true,
      .also = "0: no bonding field, the paper's model bit for bit",
      .only_some = kOnly,
      .only_with = &Capabilities::bonding,
@@ -38,17 +39,16 @@ const KeySpec kBondingKeys[] = {
      .key = "L",
      .type = KeyType::number,
      .range = {.lo = 0.0, .lo_open = true},
-     .required = true,
      .only_some = kOnly,
      .only_with = &Capabilities::bonding,
-     .meaning = "bond length: the gap past which the pull saturates at gamma beta^2 L",
+     .meaning = "bond length: the gap past which the pull saturates at gamma beta^2 L; none: "
+                "no saturation",
      .get = [](const Scene& s) { return bonding_value(s, &Bonding::L); },
      .set = [](Scene& s, const KeyValue& v) { bonding(s).L = std::get<double>(v); }},
     {.table = "bonding",
      .key = "eps_a",
      .type = KeyType::number,
      .range = {.lo = 0.0},
-     .required = true,
      .only_some = kOnly,
      .only_with = &Capabilities::bonding,
      .meaning = "the energy density gamma R^2 below which bonds do not break: beta' = "
@@ -59,7 +59,6 @@ const KeySpec kBondingKeys[] = {
      .key = "beta0",
      .type = KeyType::number,
      .range = {.lo = 0.0, .hi = 1.0},
-     .required = true,
      .also = "0: no bonding field, the paper's model bit for bit",
      .only_some = kOnly,
      .only_with = &Capabilities::bonding,
