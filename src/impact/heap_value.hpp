@@ -6,8 +6,8 @@
 // A std::vector or std::unique_ptr member makes the stepper's destructor non-trivial, and GCC
 // does not inline it on the loop's exception path (cold code), so that path calls it with the
 // local's address and the whole stepper stays in memory: a harmonic direct step took 4.3 instead
-// of 3.8 ns (AMD EPYC family 26 model 2; 1.75 with a constant force). Here every special member is inlined, and the one
-// out-of-line call, the deletion, receives the heap pointer alone.
+// of 3.8 ns (AMD EPYC family 26 model 2; 1.75 with a constant force). Here every special member is
+// inlined, and the one out-of-line call, the deletion, receives the heap pointer alone.
 #pragma once
 
 #include <memory>
