@@ -235,6 +235,23 @@ TEST_CASE("bonding: gamma = 0 or beta0 = 0 runs the paper's model byte for byte"
   }
 }
 
+TEST_CASE("bonding: a sweep's beta_T and D_T are the run's beta and D at T", "[bonding][cli]") {
+  TempDir dir;
+  dir.write("s.toml", bonded_scene("event_driven", kBreaking));
+  const Result sweep = dir.run("sweep s.toml --vary initial.v0=1,2 --summary beta_T,D_T -o -");
+  INFO(sweep.err);
+  REQUIRE(sweep.code == 0);
+  for (const char* v0 : {"1", "2"}) {
+    const Result run = dir.run(std::string("run s.toml -q -o - --set initial.v0=") + v0);
+    REQUIRE(run.code == 0);
+    // The run's last row t,u,v,beta,D against the sweep's row v0,beta_T,D_T.
+    const std::string last = run.out.substr(run.out.rfind('\n', run.out.size() - 2) + 1);
+    std::string fields = last.substr(0, last.size() - 1);
+    for (int k = 0; k < 3; ++k) fields = fields.substr(fields.find(',') + 1);
+    CHECK_THAT(sweep.out, Contains("\n" + std::string(v0) + "," + fields + ",\n"));  // no failure
+  }
+}
+
 TEST_CASE("bonding: a bad [bonding] value exits 2 naming the key, its value and the range",
           "[bonding][cli][input]") {
   TempDir dir;
