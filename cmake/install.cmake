@@ -15,6 +15,7 @@ set(IMPACT_PUBLIC_HEADERS
   error_norms.hpp event_driven.hpp event_log.hpp event_track.hpp events.hpp exact.hpp
   exact_bonded.hpp
   fb_newton.hpp flight_search.hpp force.hpp format.hpp free_flight.hpp harmonic_series.hpp
+  heap_value.hpp
   internal.hpp internal_floor.hpp internal_stepper.hpp linear_flight.hpp linear_law.hpp
   model.hpp moreau_jean.hpp ode_flight.hpp output.hpp penalty.hpp registry.hpp repeats.hpp
   restitution.hpp row_stream.hpp run.hpp run_result.hpp run_scene.hpp scene.hpp scheme_flight.hpp stepper.hpp

@@ -55,11 +55,39 @@ TEST_CASE("sweep: a lane that overflows is marked failed, the others are not",
   // The second particle's COR step gets an infinite N and comes back finite (v = -COR v): the
   // mark must stay although its state is finite again, as simulate() stops at that step.
   const std::vector<State> initial{{5, -1}, {1e-300, -1e300}, {1e308, 1e308}};
-  std::vector<std::optional<PointSummary>> out(3);
-  summarize_together({EnsembleMethod::direct, 0.5}, Grid{1e-10, 3}, models, initial, out);
-  CHECK(out[0].has_value());
-  CHECK_FALSE(out[1].has_value());
-  CHECK_FALSE(out[2].has_value());
+  // The same with the finite check alone (a sweep of the final state).
+  for (const SummaryDepth depth : {SummaryDepth::per_step, SummaryDepth::final_state}) {
+    std::vector<std::optional<PointSummary>> out(3);
+    summarize_together({EnsembleMethod::direct, 0.5}, Grid{1e-10, 3}, models, initial, out, {},
+                       nullptr, 0, depth);
+    CHECK(out[0].has_value());
+    CHECK_FALSE(out[1].has_value());
+    CHECK_FALSE(out[2].has_value());
+  }
+}
+
+TEST_CASE("sweep: a final-state summary keeps the per-step one's final state, energy and failures",
+          "[sweep][property]") {
+  std::vector<Model> models;
+  std::vector<State> initial;
+  random_particles(203, 20261207u, models, initial);
+  const Grid grid{1e-3, 6000};
+  for (const EnsembleMethod method : {EnsembleMethod::direct, EnsembleMethod::moreau_jean})
+    for (const std::string_view isa : Ensemble::supported_instruction_sets()) {
+      INFO("method " << static_cast<int>(method) << ", instruction set " << isa);
+      std::vector<std::optional<PointSummary>> full(models.size()), final(models.size());
+      summarize_together({method, 0.5}, grid, models, initial, full, isa);
+      summarize_together({method, 0.5}, grid, models, initial, final, isa, nullptr, 0,
+                         SummaryDepth::final_state);
+      for (std::size_t i = 0; i < models.size(); ++i) {
+        INFO("particle " << i);
+        REQUIRE(full[i].has_value() == final[i].has_value());
+        if (!full[i]) continue;
+        CHECK(same_bits(full[i]->final.u, final[i]->final.u));
+        CHECK(same_bits(full[i]->final.v, final[i]->final.v));
+        CHECK(same_bits(full[i]->energy_final, final[i]->energy_final));
+      }
+    }
 }
 
 TEST_CASE("sweep: SPECs give their values, both ends exact", "[sweep][property]") {

@@ -139,6 +139,28 @@ TEST_CASE("sweep: the output is the same bytes whatever --threads is", "[sweep][
   CHECK(number(rows[1][1]) >= 0.0);
 }
 
+TEST_CASE("sweep: the final state alone (u_T, v_T, E_T) is the full summary's, byte for byte",
+          "[sweep][regression]") {
+  // 1000 points in the ensemble, which then keeps only its finite check (summary.hpp).
+  TempDir dir;
+  for (const char* method : {"direct", "moreau_jean"}) {
+    INFO(method);
+    const std::string args = "sweep " + quote(kFigure4Cor) +
+                             " --set time.T=0.5 --set method.name=" + method +
+                             " --vary initial.u0=0:0.2:1000 -q";
+    REQUIRE(dir.run(args + " --out full.csv").code == 0);
+    REQUIRE(dir.run(args + " --summary u_T,v_T,E_T --out final.csv").code == 0);
+    const auto full = rows_of(slurp(dir / "full.csv")), final = rows_of(slurp(dir / "final.csv"));
+    REQUIRE(full.size() == 1001);
+    REQUIRE(final.size() == full.size());
+    REQUIRE(full[0][1] == "u_T");
+    REQUIRE(full[0][3] == "E_T");
+    for (std::size_t r = 0; r < full.size(); ++r)
+      CHECK(std::vector<std::string>(full[r].begin(), full[r].begin() + 4) ==
+            std::vector<std::string>(final[r].begin(), final[r].begin() + 4));
+  }
+}
+
 TEST_CASE("sweep: shards merged are the unsharded file, byte for byte", "[sweep][regression]") {
   TempDir dir;
   const std::string args = "sweep " + quote(kFigure4Cor) +

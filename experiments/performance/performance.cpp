@@ -220,7 +220,8 @@ struct Quantity {
 Quantity quantity_of(const std::string& name) {
   if (name.rfind("ensemble", 0) == 0 || name.rfind("sweep_kernel", 0) == 0)
     return {"particle_steps_per_s", "particle-steps/s", 1.0};
-  if (name.rfind("cli_sweep", 0) == 0) return {"s_per_step", "ns/particle-step", 1e9};
+  if (name.rfind("cli_sweep", 0) == 0)  // cli_sweep and cli_sweep_final
+    return {"s_per_step", "ns/particle-step", 1e9};
   if (name == "exact_impacts" || name.rfind("impacts/", 0) == 0)
     return {"s_per_impact", "ns/impact", 1e9};
   if (name == "cli_rows") return {"s_per_step", "ns/row", 1e9};

@@ -17,8 +17,8 @@ namespace {
 const ExperimentContext kSource{IMPACT_SOURCE_DIR, ""};
 
 constexpr int kPoints = 960;
-constexpr double kH = 1e-4, kT = 10.0;
-constexpr std::int64_t kSteps = 100'000;
+constexpr double kH = 1e-4, kT = 100.0;
+constexpr std::int64_t kSteps = 1'000'000;
 constexpr double kParticleSteps = static_cast<double>(kPoints) * static_cast<double>(kSteps);
 
 struct SweepMethod {
@@ -68,13 +68,28 @@ void register_sweep_benchmarks(void (*add_statistics)(benchmark::internal::Bench
     });
     add_statistics(b, false);
     for (const int threads : {1, 2})
-      register_cli_run("cli_sweep/" + std::string(m.name) + "/" + std::to_string(threads),
-                       {cli, "sweep", kSource.scene_path("figure4", "cor075.toml"), "--vary",
-                        "initial.u0=1:10:" + std::to_string(kPoints), "--set",
-                        "method.name=" + std::string(m.name), "--set", "time.h=" + round_trip(kH),
-                        "--set", "time.T=" + round_trip(kT), "--threads", std::to_string(threads),
-                        "--quiet", "--out", out_dir + "/cli_sweep.csv"},
-                       static_cast<std::int64_t>(kParticleSteps), add_statistics);
+      for (const bool final_state : {false, true}) {
+        std::vector<std::string> args{cli,
+                                      "sweep",
+                                      kSource.scene_path("figure4", "cor075.toml"),
+                                      "--vary",
+                                      "initial.u0=1:10:" + std::to_string(kPoints),
+                                      "--set",
+                                      "method.name=" + std::string(m.name),
+                                      "--set",
+                                      "time.h=" + round_trip(kH),
+                                      "--set",
+                                      "time.T=" + round_trip(kT),
+                                      "--threads",
+                                      std::to_string(threads),
+                                      "--quiet",
+                                      "--out",
+                                      out_dir + "/cli_sweep.csv"};
+        if (final_state) args.insert(args.end(), {"--summary", "u_T,v_T,E_T"});
+        register_cli_run(std::string(final_state ? "cli_sweep_final/" : "cli_sweep/") + m.name +
+                             "/" + std::to_string(threads),
+                         args, static_cast<std::int64_t>(kParticleSteps), add_statistics);
+      }
   }
 }
 
@@ -97,10 +112,12 @@ std::string ratio_table(const std::function<double(const std::string&)>& best) {
     for (const int threads : {1, 2}) {
       // ns per particle-step of CPU time over the kernel's, 1e9 / rate.
       const double kernel_ns = 1e9 / best("sweep_kernel/" + std::string(m.name) + "/" + isa);
-      row("`impact sweep` / ensemble kernel (" + isa + "), " + m.name + ", " +
-              std::to_string(threads) + (threads == 1 ? " thread" : " threads"),
-          best("cli_sweep/" + std::string(m.name) + "/" + std::to_string(threads)) / kernel_ns,
-          1.2);
+      const std::string tail = std::string(m.name) + "/" + std::to_string(threads);
+      const std::string what = "ensemble kernel (" + isa + "), " + m.name + ", " +
+                               std::to_string(threads) + (threads == 1 ? " thread" : " threads");
+      row("`impact sweep` / " + what, best("cli_sweep/" + tail) / kernel_ns, 1.2);
+      row("`impact sweep --summary u_T,v_T,E_T` / " + what,
+          best("cli_sweep_final/" + tail) / kernel_ns, 1.2);
     }
   return md;
 }

@@ -2,10 +2,13 @@
 // ratios `make performance` reports against their targets:
 //   sweep_kernel/<method>/<isa>          particle-steps per second of the ensemble alone on a
 //                                        sweep's points: figure4/cor075 dropped from u0 = 1..10 m
-//                                        (960 points), h = 1e-4, T = 10 s (1e5 steps)
+//                                        (960 points), h = 1e-4, T = 100 s (1e6 steps, so that
+//                                        the process's start, about 30 ms, stays near 5%)
 //   cli_sweep/<method>/<threads>         `impact sweep` of the same points as a user runs it (a
 //                                        process, CSV of the summaries); CPU time of the child (of
 //                                        every thread) per particle-step
+//   cli_sweep_final/<method>/<threads>   the same with `--summary u_T,v_T,E_T`: the final state
+//                                        alone, without the per-step summary
 // The ratios (ratio_table): `impact run` over simulate() per phase (performance_phases.hpp;
 // target 1.3), `impact sweep` over the ensemble kernel of the widest instruction set (target
 // 1.2, the CPU time of one thread and of two), direct with a harmonic force over a constant one

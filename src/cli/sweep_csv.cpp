@@ -7,7 +7,10 @@
 #include <cstdio>
 #include <limits>
 #include <optional>
+#include <string>
+#include <vector>
 
+#include "impact/model.hpp"
 #include "impact/output.hpp"
 #include "scene/scene_error.hpp"
 
@@ -36,7 +39,8 @@ constexpr QuantityInfo kQuantities[] = {
     {Quantity::max_u, "max_u", "largest u^l, t = 0 included"},
     {Quantity::iterations, "iterations", "Newton iterations (fb_newton) or ODE steps (penalty)"},
     {Quantity::z1_T, "z1_T",
-     "NAME_T: the internal variable NAME ([[internal]]) at the last grid time, one column each"},
+     "NAME_T: the internal variable NAME ([[internal]]) at the last grid time, one column each; "
+     "with [bonding]: beta_T and D_T"},
     {Quantity::z2_T, "z2_T", ""},
     {Quantity::z3_T, "z3_T", ""},
     {Quantity::z4_T, "z4_T", ""},
@@ -65,9 +69,18 @@ std::optional<std::size_t> internal_quantity(Quantity q) {
   return static_cast<std::size_t>(q) - static_cast<std::size_t>(Quantity::z1_T);
 }
 
+// The names of the model's internal variables at T: a bonded model's state carries beta and D there
+// (model.hpp), the others their [[internal]] variables.
+std::vector<std::string> internal_names(const Model& model) {
+  if (bonded(model)) return {"beta", "D"};
+  std::vector<std::string> names;
+  for (const auto& variable : model.internal) names.push_back(variable.name);
+  return names;
+}
+
 // Whether a quantity has a column for this model: NAME_T for its internal variables only.
 bool exists_for(Quantity q, const Model& model) {
-  if (const auto i = internal_quantity(q)) return *i < model.internal.size();
+  if (const auto i = internal_quantity(q)) return *i < internal_names(model).size();
   return q != Quantity::err_internal_sup || !model.internal.empty();
 }
 
@@ -140,8 +153,10 @@ std::string quantities_help() {
 }
 
 std::string quantity_name(Quantity q, const Model& model) {
-  if (const auto i = internal_quantity(q); i && *i < model.internal.size())
-    return model.internal[*i].name + "_T";
+  if (const auto i = internal_quantity(q)) {
+    const std::vector<std::string> names = internal_names(model);
+    if (*i < names.size()) return names[*i] + "_T";
+  }
   return std::string(kQuantities[static_cast<int>(q)].name);
 }
 

@@ -48,6 +48,13 @@ class Runner {
                           grid.shared_grid_run() / shard.n >= kMinEnsemble;
     chunk_ = together ? kChunkPoints : std::clamp<std::int64_t>(points_ / 16, 1, kChunkPoints);
     timed_ = std::find(quantities.begin(), quantities.end(), Quantity::wall_s) != quantities.end();
+    // The ensemble keeps the per-step summary only for the columns that read it: a sweep of the
+    // final state (u_T, v_T, E_T) steps at close to the kernel's rate.
+    const bool per_step = std::any_of(quantities.begin(), quantities.end(), [](Quantity q) {
+      return q == Quantity::contact_steps || q == Quantity::impacts ||
+             q == Quantity::first_impact_time || q == Quantity::rest_time || q == Quantity::max_u;
+    });
+    depth_ = per_step ? SummaryDepth::per_step : SummaryDepth::final_state;
   }
 
   std::int64_t points() const { return points_; }
@@ -149,7 +156,7 @@ class Runner {
       summaries.assign(models.size(), std::nullopt);
       const auto start = timed_ ? Clock::now() : Clock::time_point();
       summarize_together(begin->kind, begin->grid, models, initial, summaries, instruction_set_,
-                         poll_.stop, poll_.poll_steps);
+                         poll_.stop, poll_.poll_steps, depth_);
       const double share = timed_ ? seconds_since(start) / static_cast<double>(models.size()) : 0;
       for (auto c = begin; c != end; ++c) {
         PointResult& r = results[static_cast<std::size_t>(c->position)];
@@ -174,6 +181,7 @@ class Runner {
   const SweepPoll& poll_;
   std::int64_t points_ = 0, chunk_ = 1;
   bool timed_ = false;
+  SummaryDepth depth_ = SummaryDepth::per_step;
 };
 
 // At most 4 chunks per thread wait to be written (flat memory).

@@ -122,6 +122,12 @@ class BasicDirect {
     if (params.free_flight != FreeFlightForm::closed_form)
       throw std::invalid_argument("direct with (5-1) as printed is DirectAsPrinted");
   }
+  BasicDirect(const BasicDirect&) = default;
+  BasicDirect(BasicDirect&&) noexcept = default;
+  BasicDirect& operator=(const BasicDirect&) = default;
+  BasicDirect& operator=(BasicDirect&&) noexcept = default;
+  // Inlined even on a step loop's exception path (heap_value.hpp).
+  [[gnu::always_inline]] ~BasicDirect() {}
 
   // A free flight starts at s: the anchor of the closed form (free_flight.hpp).
   [[gnu::always_inline]] void initialize(const State& s, std::int64_t l) {

@@ -60,12 +60,18 @@ struct Columns {
   SummaryColumns summary;
 };
 
-template <class Real>
+// What the step loop keeps besides the state: nothing (the kernel alone), the finite check, or
+// the finite check and the per-step summary.
+enum class Tally { none, finite, full };
+
+template <Tally T, class Real>
 [[gnu::always_inline]] inline void load_summary(SummaryLanes<Real>& s, Real& phi, Real& u,
                                                 Real& poison, const SummaryColumns& c,
                                                 Eigen::Index i) {
   load(phi, c.phi + i);
   load(u, c.u + i);
+  load(poison, c.poison + i);
+  if constexpr (T != Tally::full) return;
   load(s.contacts.steps, c.steps + i);
   load(s.contacts.episodes, c.episodes + i);
   load(s.contacts.run, c.run + i);
@@ -73,14 +79,15 @@ template <class Real>
   load(s.first_l, c.first_l + i);
   load(s.first_u, c.first_u + i);
   load(s.first_v, c.first_v + i);
-  load(poison, c.poison + i);
 }
 
-template <class Real>
+template <Tally T, class Real>
 [[gnu::always_inline]] inline void store_summary(const SummaryColumns& c, Eigen::Index i,
                                                  const SummaryLanes<Real>& s, const Real& u,
                                                  const Real& poison) {
   store(c.u + i, u);
+  store(c.poison + i, poison);
+  if constexpr (T != Tally::full) return;
   store(c.steps + i, s.contacts.steps);
   store(c.episodes + i, s.contacts.episodes);
   store(c.run + i, s.contacts.run);
@@ -88,7 +95,6 @@ template <class Real>
   store(c.first_l + i, s.first_l);
   store(c.first_u + i, s.first_u);
   store(c.first_v + i, s.first_v);
-  store(c.poison + i, poison);
 }
 
 // After a step from (u_before, v_before) at t_l, l in every lane: the summary, and the poison, the
@@ -96,12 +102,12 @@ template <class Real>
 // of finite values only makes a lane be re-run alone). A non-finite v makes u or N non-finite in
 // the same step: in direct, v_free overflows only with the free flight u_free (which is u, or
 // enters N), and v_contact is -COR v^l or v_free + h N; in moreau_jean, u is integrated from v.
-template <class Real>
-[[gnu::always_inline]] inline void summarize_step(SummaryLanes<Real>& s, Real& poison,
-                                                  const Real& l, const Real& phi,
-                                                  const Real& u_before, const Real& v_before,
-                                                  const Real& u, const Real& force) {
-  summary_step(s, l, phi, u_before, v_before, u, force);
+template <Tally T, class Real>
+[[gnu::always_inline]] inline void tally_step(SummaryLanes<Real>& s, Real& poison, const Real& l,
+                                              const Real& phi, const Real& u_before,
+                                              const Real& v_before, const Real& u,
+                                              const Real& force) {
+  if constexpr (T == Tally::full) summary_step(s, l, phi, u_before, v_before, u, force);
   poison += u + force;
 }
 
@@ -111,7 +117,7 @@ template <class Real>
 // updates the summary on u = phi + gap, the u the single-particle solvers return (u^l is carried
 // from the step before, so that u^0 is the initial u as given); `first_step` is the index l of the
 // first of the steps.
-template <int Lanes, int Vectors, bool Summarize>
+template <int Lanes, int Vectors, Tally Summarize>
 [[gnu::always_inline]] inline void direct_blocks(const Columns& c, Eigen::Index padded,
                                                  std::int64_t first_step, std::int64_t steps,
                                                  double h) {
@@ -135,17 +141,18 @@ template <int Lanes, int Vectors, bool Summarize>
       load(s[b].anchor_gap, c.anchor_gap + i);
       load(s[b].anchor_v, c.anchor_v + i);
       load(s[b].since, c.since + i);
-      if constexpr (Summarize) load_summary(summary[b], phi[b], u[b], poison[b], c.summary, i);
+      if constexpr (Summarize != Tally::none)
+        load_summary<Summarize>(summary[b], phi[b], u[b], poison[b], c.summary, i);
     }
-    if constexpr (Summarize) {
+    if constexpr (Summarize != Tally::none) {
       Real l = Real{} + static_cast<double>(first_step);
       for (std::int64_t k = 0; k < steps; ++k, l += 1)
         for (int b = 0; b < Vectors; ++b) {
           const Real u_before = u[b], v_before = s[b].v;
           direct_step(s[b], f[b], cor[b], has_cor[b], fixed_point[b], h);
           u[b] = phi[b] + s[b].gap;
-          summarize_step(summary[b], poison[b], l, phi[b], u_before, v_before, u[b],
-                         s[b].contact_force);
+          tally_step<Summarize>(summary[b], poison[b], l, phi[b], u_before, v_before, u[b],
+                                s[b].contact_force);
         }
     } else {
       for (std::int64_t k = 1; k < steps; ++k)  // gap and N on the last step only (Outputs)
@@ -162,12 +169,13 @@ template <int Lanes, int Vectors, bool Summarize>
       store(c.anchor_gap + i, s[b].anchor_gap);
       store(c.anchor_v + i, s[b].anchor_v);
       store(c.since + i, s[b].since);
-      if constexpr (Summarize) store_summary(c.summary, i, summary[b], u[b], poison[b]);
+      if constexpr (Summarize != Tally::none)
+        store_summary<Summarize>(c.summary, i, summary[b], u[b], poison[b]);
     }
   }
 }
 
-template <int Lanes, int Vectors, bool Summarize>
+template <int Lanes, int Vectors, Tally Summarize>
 [[gnu::always_inline]] inline void moreau_jean_blocks(const Columns& c, Eigen::Index padded,
                                                       std::int64_t first_step, std::int64_t steps,
                                                       double theta, double h) {
@@ -183,16 +191,18 @@ template <int Lanes, int Vectors, bool Summarize>
       load(gap[b], c.gap + i);
       load(v[b], c.v + i);
       load(force[b], c.force + i);
-      if constexpr (Summarize) load_summary(summary[b], phi[b], u[b], poison[b], c.summary, i);
+      if constexpr (Summarize != Tally::none)
+        load_summary<Summarize>(summary[b], phi[b], u[b], poison[b], c.summary, i);
     }
-    if constexpr (Summarize) {
+    if constexpr (Summarize != Tally::none) {
       Real l = Real{} + static_cast<double>(first_step);
       for (std::int64_t k = 0; k < steps; ++k, l += 1)
         for (int b = 0; b < Vectors; ++b) {
           const Real u_before = u[b], v_before = v[b];
           moreau_jean_step(gap[b], v[b], force[b], f[b], e[b], theta, h);
           u[b] = phi[b] + gap[b];
-          summarize_step(summary[b], poison[b], l, phi[b], u_before, v_before, u[b], force[b]);
+          tally_step<Summarize>(summary[b], poison[b], l, phi[b], u_before, v_before, u[b],
+                                force[b]);
         }
     } else {
       for (std::int64_t k = 0; k < steps; ++k)
@@ -204,7 +214,8 @@ template <int Lanes, int Vectors, bool Summarize>
       store(c.gap + i, gap[b]);
       store(c.v + i, v[b]);
       store(c.force + i, force[b]);
-      if constexpr (Summarize) store_summary(c.summary, i, summary[b], u[b], poison[b]);
+      if constexpr (Summarize != Tally::none)
+        store_summary<Summarize>(c.summary, i, summary[b], u[b], poison[b]);
     }
   }
 }
@@ -217,60 +228,72 @@ constexpr Eigen::Index kPadding = 192;
 // 10 values per vector in registers, moreau_jean 6 (experiments/performance/README.md); direct's
 // also on an Intel Xeon family 6 model 167 (of 3, 4, 6, 8). The summary adds 8 values per vector
 // that change at every step; with them, 3 vectors for direct and 4 for moreau_jean were the
-// fastest of 2, 3, 4 and 6 (docs/sweeps.md).
-template <int Lanes, int Vectors, int SummaryVectors>
+// fastest of 2, 3, 4 and 6 (docs/sweeps.md). The finite check alone (a sweep of the final state)
+// adds 3: 3 vectors for direct (of 3, 4, 6) and 6 for moreau_jean (of 4, 6, 8) on an AMD EPYC
+// family 26 model 2.
+template <int Lanes, int Vectors, int SummaryVectors, int FiniteVectors>
 [[gnu::always_inline]] inline void direct_entry(const Columns& c, Eigen::Index n,
                                                 std::int64_t first_step, std::int64_t steps,
-                                                double h, bool summarize) {
-  static_assert(kPadding % (Lanes * Vectors) == 0 && kPadding % (Lanes * SummaryVectors) == 0);
-  if (summarize)
-    direct_blocks<Lanes, SummaryVectors, true>(c, n, first_step, steps, h);
+                                                double h, Tally tally) {
+  static_assert(kPadding % (Lanes * Vectors) == 0 && kPadding % (Lanes * SummaryVectors) == 0 &&
+                kPadding % (Lanes * FiniteVectors) == 0);
+  if (tally == Tally::full)
+    direct_blocks<Lanes, SummaryVectors, Tally::full>(c, n, first_step, steps, h);
+  else if (tally == Tally::finite)
+    direct_blocks<Lanes, FiniteVectors, Tally::finite>(c, n, first_step, steps, h);
   else
-    direct_blocks<Lanes, Vectors, false>(c, n, first_step, steps, h);
+    direct_blocks<Lanes, Vectors, Tally::none>(c, n, first_step, steps, h);
 }
-template <int Lanes, int Vectors, int SummaryVectors>
+template <int Lanes, int Vectors, int SummaryVectors, int FiniteVectors>
 [[gnu::always_inline]] inline void moreau_jean_entry(const Columns& c, Eigen::Index n,
                                                      std::int64_t first_step, std::int64_t steps,
-                                                     double theta, double h, bool summarize) {
-  static_assert(kPadding % (Lanes * Vectors) == 0 && kPadding % (Lanes * SummaryVectors) == 0);
-  if (summarize)
-    moreau_jean_blocks<Lanes, SummaryVectors, true>(c, n, first_step, steps, theta, h);
+                                                     double theta, double h, Tally tally) {
+  static_assert(kPadding % (Lanes * Vectors) == 0 && kPadding % (Lanes * SummaryVectors) == 0 &&
+                kPadding % (Lanes * FiniteVectors) == 0);
+  if (tally == Tally::full)
+    moreau_jean_blocks<Lanes, SummaryVectors, Tally::full>(c, n, first_step, steps, theta, h);
+  else if (tally == Tally::finite)
+    moreau_jean_blocks<Lanes, FiniteVectors, Tally::finite>(c, n, first_step, steps, theta, h);
   else
-    moreau_jean_blocks<Lanes, Vectors, false>(c, n, first_step, steps, theta, h);
+    moreau_jean_blocks<Lanes, Vectors, Tally::none>(c, n, first_step, steps, theta, h);
 }
 
 constexpr int kDirectSummaryVectors = 3, kMoreauJeanSummaryVectors = 4;
+constexpr int kDirectFiniteVectors = 3, kMoreauJeanFiniteVectors = 6;
 
 void baseline_direct(const Columns& c, Eigen::Index n, std::int64_t l, std::int64_t steps, double h,
-                     bool summarize) {
-  direct_entry<2, 6, kDirectSummaryVectors>(c, n, l, steps, h, summarize);
+                     Tally tally) {
+  direct_entry<2, 6, kDirectSummaryVectors, kDirectFiniteVectors>(c, n, l, steps, h, tally);
 }
 void baseline_moreau_jean(const Columns& c, Eigen::Index n, std::int64_t l, std::int64_t steps,
-                          double theta, double h, bool summarize) {
-  moreau_jean_entry<2, 8, kMoreauJeanSummaryVectors>(c, n, l, steps, theta, h, summarize);
+                          double theta, double h, Tally tally) {
+  moreau_jean_entry<2, 8, kMoreauJeanSummaryVectors, kMoreauJeanFiniteVectors>(c, n, l, steps,
+                                                                               theta, h, tally);
 }
 #if defined(__x86_64__) && defined(__GNUC__)
 [[gnu::target("avx2"), IMPACT_NO_CONTRACT]] void avx2_direct(const Columns& c, Eigen::Index n,
                                                              std::int64_t l, std::int64_t steps,
-                                                             double h, bool summarize) {
-  direct_entry<4, 6, kDirectSummaryVectors>(c, n, l, steps, h, summarize);
+                                                             double h, Tally tally) {
+  direct_entry<4, 6, kDirectSummaryVectors, kDirectFiniteVectors>(c, n, l, steps, h, tally);
 }
 [[gnu::target("avx2"), IMPACT_NO_CONTRACT]] void avx2_moreau_jean(const Columns& c, Eigen::Index n,
                                                                   std::int64_t l,
                                                                   std::int64_t steps, double theta,
-                                                                  double h, bool summarize) {
-  moreau_jean_entry<4, 8, kMoreauJeanSummaryVectors>(c, n, l, steps, theta, h, summarize);
+                                                                  double h, Tally tally) {
+  moreau_jean_entry<4, 8, kMoreauJeanSummaryVectors, kMoreauJeanFiniteVectors>(c, n, l, steps,
+                                                                               theta, h, tally);
 }
 [[gnu::target("avx512f"), IMPACT_NO_CONTRACT]] void avx512_direct(const Columns& c, Eigen::Index n,
                                                                   std::int64_t l,
                                                                   std::int64_t steps, double h,
-                                                                  bool summarize) {
-  direct_entry<8, 6, kDirectSummaryVectors>(c, n, l, steps, h, summarize);
+                                                                  Tally tally) {
+  direct_entry<8, 6, kDirectSummaryVectors, kDirectFiniteVectors>(c, n, l, steps, h, tally);
 }
 [[gnu::target("avx512f"), IMPACT_NO_CONTRACT]] void avx512_moreau_jean(
     const Columns& c, Eigen::Index n, std::int64_t l, std::int64_t steps, double theta, double h,
-    bool summarize) {
-  moreau_jean_entry<8, 8, kMoreauJeanSummaryVectors>(c, n, l, steps, theta, h, summarize);
+    Tally tally) {
+  moreau_jean_entry<8, 8, kMoreauJeanSummaryVectors, kMoreauJeanFiniteVectors>(c, n, l, steps,
+                                                                               theta, h, tally);
 }
 #endif
 
@@ -333,10 +356,11 @@ void Ensemble::use(std::string_view instruction_set) {
   level_ = supported_level(instruction_set);
 }
 
-void Ensemble::keep_summary() {
+void Ensemble::keep_summary(SummaryDepth depth) {
   if (steps_done_ != 0)
     throw std::logic_error("Ensemble::keep_summary: call it before the first advance()");
   summarize_ = true;
+  per_step_ = depth == SummaryDepth::per_step;
   for (Eigen::ArrayXd* column :
        {&steps_, &episodes_, &run_, &first_l_, &first_u_, &first_v_, &poison_})
     column->setZero(padded_);
@@ -363,20 +387,21 @@ void Ensemble::advance(std::int64_t steps) {
                   anchor_v_.data(), since_.data(), summary};
   const bool direct = method_ == EnsembleMethod::direct;
   const std::int64_t l = steps_done_;
+  const Tally tally = !summarize_ ? Tally::none : per_step_ ? Tally::full : Tally::finite;
   switch (level_) {
 #if defined(__x86_64__) && defined(__GNUC__)
     case kAvx512:
-      direct ? avx512_direct(c, padded_, l, steps, h_, summarize_)
-             : avx512_moreau_jean(c, padded_, l, steps, theta_, h_, summarize_);
+      direct ? avx512_direct(c, padded_, l, steps, h_, tally)
+             : avx512_moreau_jean(c, padded_, l, steps, theta_, h_, tally);
       break;
     case kAvx2:
-      direct ? avx2_direct(c, padded_, l, steps, h_, summarize_)
-             : avx2_moreau_jean(c, padded_, l, steps, theta_, h_, summarize_);
+      direct ? avx2_direct(c, padded_, l, steps, h_, tally)
+             : avx2_moreau_jean(c, padded_, l, steps, theta_, h_, tally);
       break;
 #endif
     default:
-      direct ? baseline_direct(c, padded_, l, steps, h_, summarize_)
-             : baseline_moreau_jean(c, padded_, l, steps, theta_, h_, summarize_);
+      direct ? baseline_direct(c, padded_, l, steps, h_, tally)
+             : baseline_moreau_jean(c, padded_, l, steps, theta_, h_, tally);
   }
   u_ = phi_ + gap_;  // as the single-particle solvers return u = phi + gap
   steps_done_ += steps;

@@ -26,6 +26,10 @@ namespace impact {
 // The methods whose step is a closed-form kernel the ensemble can vectorise.
 enum class EnsembleMethod { direct, moreau_jean };
 
+// What a summary keeps: the per-step quantities (contacts, impacts, the first impact, max u) or
+// only what a final state needs (the finite check), which costs a few additions a step.
+enum class SummaryDepth { final_state, per_step };
+
 class Ensemble {
  public:
   using Column = Eigen::ArrayXd::ConstSegmentReturnType;
@@ -48,10 +52,11 @@ class Ensemble {
   Column contact_force() const { return force_.head(size_); }
   State state(Eigen::Index i) const { return {u_[i], v_[i]}; }
 
-  // From here on (before the first advance(), else std::logic_error) every step also updates each
-  // particle's summary (summary_lanes.hpp), as a SummaryObserver does for one particle, and notes
-  // whether it gave a non-finite u, v or N^l (where simulate() would have stopped).
-  void keep_summary();
+  // From here on (before the first advance(), else std::logic_error) every step notes whether it
+  // gave a non-finite u, v or N^l (where simulate() would have stopped) and, with
+  // SummaryDepth::per_step, also updates each particle's summary (summary_lanes.hpp) as a
+  // SummaryObserver does for one particle; with final_state summary() is left at its start.
+  void keep_summary(SummaryDepth depth = SummaryDepth::per_step);
   SummaryLanes<double> summary(Eigen::Index i) const;
   bool failed(Eigen::Index i) const { return !std::isfinite(poison_[i]); }
 
@@ -79,7 +84,7 @@ class Ensemble {
   Eigen::ArrayXd anchor_gap_, anchor_v_, since_;  // direct's free-flight anchor (DirectLanes)
   // The summary (empty unless keep_summary()): the fields of SummaryLanes, and the poison (see
   // ensemble.cpp), finite while every step was.
-  bool summarize_ = false;
+  bool summarize_ = false, per_step_ = false;
   Eigen::ArrayXd steps_, episodes_, run_, max_u_, first_l_, first_u_, first_v_, poison_;
 };
 

@@ -74,6 +74,12 @@ class BasicMoreauJean {
         theta_(params.theta),
         e_(newton_e(contact_law(model, kElasticReading))),
         force_(model, h) {}
+  BasicMoreauJean(const BasicMoreauJean&) = default;
+  BasicMoreauJean(BasicMoreauJean&&) noexcept = default;
+  BasicMoreauJean& operator=(const BasicMoreauJean&) = default;
+  BasicMoreauJean& operator=(BasicMoreauJean&&) noexcept = default;
+  // Inlined even on a step loop's exception path (heap_value.hpp).
+  [[gnu::always_inline]] ~BasicMoreauJean() {}
 
   [[gnu::always_inline]] void initialize(const State& s, std::int64_t l) {
     state_ = {s.u - phi_, s.v};

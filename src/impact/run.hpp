@@ -188,6 +188,8 @@ concept StepsLocally = std::remove_cvref_t<Observer>::kStepsLocally;
 //    loop, a store-to-load round trip a step. Measured through `impact run` on an AMD EPYC family
 //    26 model 2, 1e8 steps in free flight: direct 4.7 -> 2.2 ns, moreau_jean 8.2 -> 2.6 ns a step
 //    (simulate() alone: 1.7 and 2.2);
+//  - that holds on the loop's exception path too, where the local is destroyed: a stepper that
+//    owns heap memory holds it in a HeapValue and inlines its destructor (heap_value.hpp);
 //  - an observer that updates running values of its own at every step and says so (StepsLocally)
 //    is stepped as a local copy too, copied back when the run ends, for the same reason;
 //  - a stepper whose steps have begun to repeat (RepeatingSteps: a particle resting or chattering

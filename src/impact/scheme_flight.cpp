@@ -1,17 +1,20 @@
 #include "impact/scheme_flight.hpp"
 
 #include <cmath>
+#include <memory>
 
 namespace impact {
 
 GridPhasor::GridPhasor(const Harmonic& w, double h)
-    : omega_(w.omega), h_(h), table_(static_cast<std::size_t>(kLevels * kBase)) {
+    : omega_(w.omega), h_(h) {
   phase_ = {std::cos(w.phase), std::sin(w.phase)};
+  auto table = std::make_unique<std::array<Pair, kLevels * kBase>>();
   for (int k = 0; k < kLevels; ++k)
     for (int d = 0; d < kBase; ++d) {
       const double a = angle(k, d);
-      table_[static_cast<std::size_t>(k * kBase + d)] = {std::cos(a), std::sin(a)};
+      (*table)[static_cast<std::size_t>(k * kBase + d)] = {std::cos(a), std::sin(a)};
     }
+  table_ = HeapValue(std::move(table));
   seek(0);
 }
 
@@ -37,26 +40,8 @@ SchemeForce::SchemeForce(const Model& model, double h)
     Model expression_part;
     expression_part.expression = model.expression;
     expression_part.internal = model.internal;
-    expression_ = std::make_unique<ForceFunction>(expression_part);
+    expression_ = HeapValue(std::make_unique<ForceFunction>(expression_part));
   }
-}
-
-SchemeForce::SchemeForce(const SchemeForce& other)
-    : phi_(other.phi_),
-      h_(other.h_),
-      has_phasor_(other.has_phasor_),
-      slow_(other.slow_),
-      phasor_(other.phasor_),
-      amplitude_over_omega_(other.amplitude_over_omega_),
-      slow_impulse_(other.slow_impulse_),
-      cos_half_(other.cos_half_),
-      sin_half_(other.sin_half_) {
-  if (other.expression_) expression_ = std::make_unique<ForceFunction>(*other.expression_);
-}
-
-SchemeForce& SchemeForce::operator=(const SchemeForce& other) {
-  if (this != &other) *this = SchemeForce(other);
-  return *this;
 }
 
 double SchemeForce::expression_integral(const ForceFunction& expression, std::int64_t l, double h,

@@ -39,12 +39,11 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <memory>
-#include <vector>
 
 #include "impact/force.hpp"
 #include "impact/free_flight.hpp"
 #include "impact/harmonic_series.hpp"
+#include "impact/heap_value.hpp"
 #include "impact/model.hpp"
 
 namespace impact {
@@ -73,15 +72,21 @@ class GridPhasor {
 
   GridPhasor() = default;
   GridPhasor(const Harmonic& w, double h);
+  GridPhasor(const GridPhasor&) = default;
+  GridPhasor(GridPhasor&&) noexcept = default;
+  GridPhasor& operator=(const GridPhasor&) = default;
+  GridPhasor& operator=(GridPhasor&&) noexcept = default;
+  // Inlined even on a step loop's exception path (heap_value.hpp).
+  [[gnu::always_inline]] ~GridPhasor() {}
   // To theta_l.
   [[gnu::always_inline]] void seek(std::int64_t l) {
     l_ = l;
     Pair upper = phase_;
     for (int k = kLevels - 1; k >= 1; --k)
-      upper = times(upper, table_[k * kBase + ((l >> (kDigitBits * k)) & (kBase - 1))]);
+      upper = times(upper, (*table_)[k * kBase + ((l >> (kDigitBits * k)) & (kBase - 1))]);
     upper_ = upper;
     digit_ = static_cast<int>(l & (kBase - 1));
-    now_ = times(upper_, table_[digit_]);
+    now_ = times(upper_, (*table_)[digit_]);
   }
   // From theta_l to theta_{l+1}.
   [[gnu::always_inline]] void advance() {
@@ -90,7 +95,7 @@ class GridPhasor {
       return;
     }
     ++l_;
-    now_ = times(upper_, table_[digit_]);
+    now_ = times(upper_, (*table_)[digit_]);
   }
   double cos() const { return now_.c; }
   double sin() const { return now_.s; }
@@ -108,7 +113,8 @@ class GridPhasor {
   }
 
   double omega_ = 0, h_ = 0;
-  std::vector<Pair> table_;  // table[k][d] at k * kBase + d
+  // table[k][d] at k * kBase + d, on the heap (heap_value.hpp): 9 KiB a stepper need not move
+  HeapValue<std::array<Pair, kLevels * kBase>> table_;
   Pair phase_;
   std::int64_t l_ = 0;
   int digit_ = 0;  // d_0 of l
@@ -120,11 +126,12 @@ class GridPhasor {
 class SchemeForce {
  public:
   SchemeForce(const Model& model, double h);
-  SchemeForce(const SchemeForce& other);
-  SchemeForce& operator=(const SchemeForce& other);
+  SchemeForce(const SchemeForce&) = default;
   SchemeForce(SchemeForce&&) noexcept = default;
+  SchemeForce& operator=(const SchemeForce&) = default;
   SchemeForce& operator=(SchemeForce&&) noexcept = default;
-  ~SchemeForce() = default;
+  // Inlined even on a step loop's exception path (heap_value.hpp).
+  [[gnu::always_inline]] ~SchemeForce() {}
 
   bool constant() const { return !has_phasor_ && !expression_; }
   // I^l, the integral of f(t) - f over [t_l, t_{l+1}], as its harmonic and expression parts; the
@@ -182,7 +189,7 @@ class SchemeForce {
   // A slow force: a h sinc(w h/2), cos and sin of w h/2.
   double slow_impulse_ = 0, cos_half_ = 1, sin_half_ = 0;
   // The expression part alone (f = 0, no harmonic), on the heap: its parser binds t by address.
-  std::unique_ptr<ForceFunction> expression_;
+  HeapValue<ForceFunction> expression_;
 };
 
 // The largest w h for which the harmonic flight is summed in closed form (c above keeps all but a
@@ -201,6 +208,12 @@ class SchemeFlight {
   static constexpr double kHarmonicTermError = 2 * GridPhasor::kError + 4 * 0x1p-53;
 
   SchemeFlight(const Model& model, double h);
+  SchemeFlight(const SchemeFlight&) = default;
+  SchemeFlight(SchemeFlight&&) noexcept = default;
+  SchemeFlight& operator=(const SchemeFlight&) = default;
+  SchemeFlight& operator=(SchemeFlight&&) noexcept = default;
+  // Inlined even on a step loop's exception path (heap_value.hpp).
+  [[gnu::always_inline]] ~SchemeFlight() {}
 
   bool constant_force() const { return force_.constant(); }
   // A free flight starts at (t_l, s).

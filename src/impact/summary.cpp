@@ -38,12 +38,12 @@ std::optional<EnsembleKind> ensemble_kind(const Scene& scene) {
 void summarize_together(const EnsembleKind& kind, const Grid& grid, std::span<const Model> models,
                         std::span<const State> initial, std::span<std::optional<PointSummary>> out,
                         std::string_view instruction_set, const std::atomic<bool>* stop,
-                        std::int64_t check_every) {
+                        std::int64_t check_every, SummaryDepth depth) {
   if (out.size() != models.size())
     throw std::invalid_argument("summarize_together: as many outputs as models are needed");
   Ensemble ensemble(kind.method, models, initial, grid.h, kind.theta);
   if (!instruction_set.empty()) ensemble.use(instruction_set);
-  ensemble.keep_summary();
+  ensemble.keep_summary(depth);
   if (stop && check_every > 0) {
     while (ensemble.steps_done() < grid.steps) {
       ensemble.advance(std::min(check_every, grid.steps - ensemble.steps_done()));
@@ -54,10 +54,15 @@ void summarize_together(const EnsembleKind& kind, const Grid& grid, std::span<co
   }
   for (std::size_t i = 0; i < out.size(); ++i) {
     const auto index = static_cast<Eigen::Index>(i);
-    if (ensemble.failed(index))
+    if (ensemble.failed(index)) {
       out[i].reset();
-    else
+    } else if (depth == SummaryDepth::per_step) {
       out[i] = finish_summary(ensemble.summary(index), models[i], grid, ensemble.state(index), 0);
+    } else {
+      PointSummary& p = out[i].emplace();
+      p.final = ensemble.state(index);
+      p.energy_final = energy(models[i], p.final);  // the ensemble's force is constant
+    }
   }
 }
 

@@ -92,10 +92,12 @@ std::optional<EnsembleKind> ensemble_kind(const Scene& scene);
 // `instruction_set` picks the ensemble's vector code (Ensemble::use; all give the same bits), empty
 // for the widest this processor has. `stop`, when given, is read every check_every steps (the
 // ensemble advances in pieces of that many steps, the same bits as in one); once it is set,
-// Interrupted is thrown (run.hpp).
+// Interrupted is thrown (run.hpp). With SummaryDepth::final_state only `final` and `energy_final`
+// are computed (the rest keeps PointSummary's defaults), at close to the ensemble's own rate.
 void summarize_together(const EnsembleKind& kind, const Grid& grid, std::span<const Model> models,
                         std::span<const State> initial, std::span<std::optional<PointSummary>> out,
                         std::string_view instruction_set = {},
-                        const std::atomic<bool>* stop = nullptr, std::int64_t check_every = 0);
+                        const std::atomic<bool>* stop = nullptr, std::int64_t check_every = 0,
+                        SummaryDepth depth = SummaryDepth::per_step);
 
 }  // namespace impact

@@ -14,7 +14,10 @@ namespace {
 
 std::string json_list(const std::vector<std::string>& items) {
   std::string out = "[";
-  for (const auto& item : items) out += (out.size() > 1 ? ", " : "") + json_string(item);
+  for (const auto& item : items) {
+    if (out.size() > 1) out += ", ";
+    out += json_string(item);
+  }
   return out + "]";
 }
 

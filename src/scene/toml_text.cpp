@@ -268,7 +268,10 @@ std::string show(const toml::node& node, int depth) {
 
 std::string join(const std::vector<std::string_view>& names) {
   std::string out;
-  for (auto name : names) out += (out.empty() ? "" : ", ") + std::string(name);
+  for (auto name : names) {
+    if (!out.empty()) out += ", ";
+    out += name;
+  }
   return out;
 }
 
