@@ -62,7 +62,7 @@ struct Columns {
 
 // What the step loop keeps besides the state: nothing (the kernel alone), the finite check, or
 // the finite check and the per-step summary.
-enum class Tally { none, finite, full };
+enum class Tally { none, finite, full, full_started };
 
 template <Tally T, class Real>
 [[gnu::always_inline]] inline void load_summary(SummaryLanes<Real>& s, Real& phi, Real& u,
@@ -71,7 +71,7 @@ template <Tally T, class Real>
   load(phi, c.phi + i);
   load(u, c.u + i);
   load(poison, c.poison + i);
-  if constexpr (T != Tally::full) return;
+  if constexpr (T != Tally::full && T != Tally::full_started) return;
   load(s.contacts.steps, c.steps + i);
   load(s.contacts.episodes, c.episodes + i);
   load(s.contacts.run, c.run + i);
@@ -87,7 +87,7 @@ template <Tally T, class Real>
                                                  const Real& poison) {
   store(c.u + i, u);
   store(c.poison + i, poison);
-  if constexpr (T != Tally::full) return;
+  if constexpr (T != Tally::full && T != Tally::full_started) return;
   store(c.steps + i, s.contacts.steps);
   store(c.episodes + i, s.contacts.episodes);
   store(c.run + i, s.contacts.run);
@@ -108,7 +108,41 @@ template <Tally T, class Real>
                                               const Real& v_before, const Real& u,
                                               const Real& force) {
   if constexpr (T == Tally::full) summary_step(s, l, phi, u_before, v_before, u, force);
+  if constexpr (T == Tally::full_started)
+    summary_step<false>(s, l, phi, u_before, v_before, u, force);
   poison += u + force;
+}
+
+// Whether every lane's first contact episode has started: from then on the summary's capture of
+// the first contact changes nothing, and the steps leave it out (Tally::full_started).
+template <int Vectors, class Real>
+[[gnu::always_inline]] inline bool all_started(const SummaryLanes<Real> (&summary)[Vectors]) {
+  constexpr int kLanes = static_cast<int>(sizeof(Real) / sizeof(double));
+  for (int b = 0; b < Vectors; ++b)
+    for (int j = 0; j < kLanes; ++j)
+      if (summary[b].contacts.episodes[j] == 0) return false;
+  return true;
+}
+
+// Steps between two looks at all_started(): a look costs a few hundred cycles.
+constexpr std::int64_t kStartedCheck = 256;
+
+// The steps [k, steps) of a block with its tally: with Tally::full, the first contact is captured
+// until all_started(), checked every kStartedCheck steps, and left out after.
+template <Tally Summarize, int Vectors, class Real, class Step>
+[[gnu::always_inline]] inline void tally_steps(std::int64_t steps, Real& l,
+                                               SummaryLanes<Real> (&summary)[Vectors],
+                                               const Step& step) {
+  std::int64_t k = 0;
+  if constexpr (Summarize == Tally::full)
+    while (k < steps && !all_started(summary)) {
+      const std::int64_t end = std::min(steps, k + kStartedCheck);
+      for (; k < end; ++k, l += 1)
+        for (int b = 0; b < Vectors; ++b) step.template operator()<Tally::full>(b, l);
+    }
+  constexpr Tally rest = Summarize == Tally::full ? Tally::full_started : Summarize;
+  for (; k < steps; ++k, l += 1)
+    for (int b = 0; b < Vectors; ++b) step.template operator()<rest>(b, l);
 }
 
 // A block of Vectors vectors of Lanes particles is loaded into registers, stepped `steps` times and
@@ -146,14 +180,14 @@ template <int Lanes, int Vectors, Tally Summarize>
     }
     if constexpr (Summarize != Tally::none) {
       Real l = Real{} + static_cast<double>(first_step);
-      for (std::int64_t k = 0; k < steps; ++k, l += 1)
-        for (int b = 0; b < Vectors; ++b) {
-          const Real u_before = u[b], v_before = s[b].v;
-          direct_step(s[b], f[b], cor[b], has_cor[b], fixed_point[b], h);
-          u[b] = phi[b] + s[b].gap;
-          tally_step<Summarize>(summary[b], poison[b], l, phi[b], u_before, v_before, u[b],
-                                s[b].contact_force);
-        }
+      tally_steps<Summarize>(
+          steps, l, summary, [&]<Tally T>(int b, const Real& at) __attribute__((always_inline)) {
+            const Real u_before = u[b], v_before = s[b].v;
+            direct_step(s[b], f[b], cor[b], has_cor[b], fixed_point[b], h);
+            u[b] = phi[b] + s[b].gap;
+            tally_step<T>(summary[b], poison[b], at, phi[b], u_before, v_before, u[b],
+                          s[b].contact_force);
+          });
     } else {
       for (std::int64_t k = 1; k < steps; ++k)  // gap and N on the last step only (Outputs)
         for (int b = 0; b < Vectors; ++b)
@@ -196,14 +230,13 @@ template <int Lanes, int Vectors, Tally Summarize>
     }
     if constexpr (Summarize != Tally::none) {
       Real l = Real{} + static_cast<double>(first_step);
-      for (std::int64_t k = 0; k < steps; ++k, l += 1)
-        for (int b = 0; b < Vectors; ++b) {
-          const Real u_before = u[b], v_before = v[b];
-          moreau_jean_step(gap[b], v[b], force[b], f[b], e[b], theta, h);
-          u[b] = phi[b] + gap[b];
-          tally_step<Summarize>(summary[b], poison[b], l, phi[b], u_before, v_before, u[b],
-                                force[b]);
-        }
+      tally_steps<Summarize>(
+          steps, l, summary, [&]<Tally T>(int b, const Real& at) __attribute__((always_inline)) {
+            const Real u_before = u[b], v_before = v[b];
+            moreau_jean_step(gap[b], v[b], force[b], f[b], e[b], theta, h);
+            u[b] = phi[b] + gap[b];
+            tally_step<T>(summary[b], poison[b], at, phi[b], u_before, v_before, u[b], force[b]);
+          });
     } else {
       for (std::int64_t k = 0; k < steps; ++k)
         for (int b = 0; b < Vectors; ++b)

@@ -25,15 +25,18 @@ void start_summary(SummaryLanes<Real>& s, const Real& u0) {
 
 // Step l from (u_before, v_before) at t_l to u^{l+1} = u with N^l = force. Each selection is on
 // one comparison: combining masks (`a & b`) or nesting selections made GCC build the AVX-512 masks
-// lane by lane (10x slower).
-template <class Real, class Step>
+// lane by lane (10x slower). CaptureFirst = false leaves out the first contact's capture, which
+// changes nothing once every lane's first episode has started (the ensemble's steps after that).
+template <bool CaptureFirst = true, class Real, class Step>
 void summary_step(SummaryLanes<Real>& s, const Step& l, const Real& phi, const Real& u_before,
                   const Real& v_before, const Real& u, const Real& force) {
   // Until the first contact episode starts every step is noted; the last one noted is its first.
-  const auto none_yet = s.contacts.episodes == 0;
-  s.first_l = none_yet ? l : s.first_l;
-  s.first_u = none_yet ? u_before : s.first_u;
-  s.first_v = none_yet ? v_before : s.first_v;
+  if constexpr (CaptureFirst) {
+    const auto none_yet = s.contacts.episodes == 0;
+    s.first_l = none_yet ? l : s.first_l;
+    s.first_u = none_yet ? u_before : s.first_u;
+    s.first_v = none_yet ? v_before : s.first_v;
+  }
   decltype(u > u) contact;
   is_contact_step(phi, u, force, contact);
   count_contact(s.contacts, contact);
