@@ -206,7 +206,8 @@ TEST_CASE("force: E is v^2/2 - f u bit for bit for a constant force", "[force]")
     work.step(l, s);
     if (work.energy(s) != impact::energy(model, s)) FAIL("E differs at l = " << l);
   }
-  CHECK(impact::initial_energy(model, {5.0, -1.0}) == impact::energy(model, {5.0, -1.0}));
+  CHECK(impact::initial_energy(model, {5.0, -1.0}) ==
+        impact::energy(model, impact::State{5.0, -1.0}));
 }
 
 TEST_CASE("force: E with a harmonic force is conserved to second order, through an elastic impact",
