@@ -15,7 +15,6 @@ const MethodInfo kMethods[] = {
      .summary = "the paper's scheme (4-1)-(4-3) solved in closed form, (5-1)",
      .defaults = DirectParams{},
      .can = {.restitution = true,
-             .harmonic_force = true,
              .time_expression = true,
              .state_force = true,
              .linear_force = true,
@@ -26,7 +25,6 @@ const MethodInfo kMethods[] = {
      .summary = "(4-1)-(4-3) as the smoothed Fischer-Burmeister equation (5-3), Newton",
      .defaults = FbNewtonParams{},
      .can = {.restitution = true,
-             .harmonic_force = true,
              .time_expression = true,
              .iterations_channel = true,
              .scheme_force_channel = true,
@@ -35,7 +33,6 @@ const MethodInfo kMethods[] = {
      .summary = "Moreau-Jean theta time-stepping with Newton's impact law",
      .defaults = MoreauJeanParams{},
      .can = {.restitution = true,
-             .harmonic_force = true,
              .time_expression = true,
              .state_force = true,
              .linear_force = true,
@@ -44,12 +41,11 @@ const MethodInfo kMethods[] = {
     {.name = "penalty",
      .summary = "normal compliance N = c_N max(phi - u, 0), GSL odeiv2",
      .defaults = PenaltyParams{},
-     .can = {.harmonic_force = true, .time_expression = true, .iterations_channel = true}},
+     .can = {.time_expression = true, .iterations_channel = true}},
     {.name = "exact",
      .summary = "event-driven closed-form solution sampled on t = l h",
      .defaults = ExactParams{},
      .can = {.restitution = true,
-             .harmonic_force = true,
              .linear_force = true,
              .bonding = true,
              .reference = true,
@@ -59,7 +55,6 @@ const MethodInfo kMethods[] = {
      .summary = "event-driven solution for any f(t): GSL odeiv2 rk8pd between certified impacts",
      .defaults = EventDrivenParams{},
      .can = {.restitution = true,
-             .harmonic_force = true,
              .time_expression = true,
              .state_force = true,
              .linear_force = true,
@@ -71,7 +66,7 @@ const MethodInfo kMethods[] = {
      .summary = "(5-1) with each impact located inside its step and the rest of the step flown "
                 "after it",
      .defaults = DirectLocatedParams{},
-     .can = {.restitution = true, .harmonic_force = true, .time_expression = true}},
+     .can = {.restitution = true, .time_expression = true}},
 };
 static_assert(std::size(kMethods) == std::variant_size_v<MethodParams>);
 
@@ -108,9 +103,7 @@ bool expression_of_state(const Model& model) {
 }  // namespace
 
 std::string not_honoured(const MethodInfo& method, const Model& model) {
-  const bool harmonic = model.harmonic && model.harmonic->amplitude != 0.0;
   if (model.cor && !method.can.restitution) return "it has no restitution law for floor.cor";
-  if (harmonic && !method.can.harmonic_force) return "it takes no harmonic force (force.amplitude)";
   if (!model.expression.empty() && !method.can.time_expression)
     return "it takes no force expression (force.expression)";
   if (!method.can.state_force && expression_of_state(model))

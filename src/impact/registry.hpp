@@ -50,7 +50,6 @@ static_assert([]<class... S>(std::variant<S...>*) { return (Stepper<S> && ...); 
 // every feature.
 struct Capabilities {
   bool restitution = false;         // floor.cor: an impact law a COR acts on
-  bool harmonic_force = false;      // force.amplitude/omega/phase
   bool time_expression = false;     // force.expression (a function of t)
   bool state_force = false;         // force.expression reads u or v: f(t, u, v)
   bool linear_force = false;        // force.linear: -k (u - u_eq) - c v beside f
@@ -75,8 +74,8 @@ struct MethodInfo {
 std::span<const MethodInfo> methods();
 // The names of the methods that have a capability, for messages ("direct, fb_newton or exact").
 std::vector<std::string_view> methods_with(bool Capabilities::*capability);
-// Whether `method` honours what `model` states (a COR, a harmonic part, an expression, one that
-// reads the state, internal variables).
+// Whether `method` honours what `model` states (a COR, an expression, one that reads the state,
+// internal variables; every method takes a harmonic part).
 bool honours(const MethodInfo& method, const Model& model);
 // Why `method` does not honour `model`, its first feature the method lacks ("it takes a force of
 // t only, and force.expression reads u or v"); empty when it honours it.
