@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "cli_support.hpp"
-#include "impact/registry.hpp"
+#include "impact/capabilities.hpp"
 
 using Catch::Contains;
 using namespace impact::testing;

@@ -29,8 +29,8 @@ std::uint64_t same_bits_of(double x) {
   return std::bit_cast<std::uint64_t>(x);
 }
 
-// A new capability is a new column of the capability table (registry.hpp): a feature a scene can
-// ask for, or a property of a method. Either way it needs a row here (kFeatures) or a word in
+// A new capability is a new column of the capability table (capabilities.hpp): a feature a scene
+// can ask for, or a property of a method. Either way it needs a row here (kFeatures) or a word in
 // kNotFeatures.
 static_assert(sizeof(Capabilities) == 11,
               "a capability was added or removed: give it a row in kFeatures of "

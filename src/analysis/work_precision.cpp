@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "impact/registry.hpp"
+#include "impact/any_stepper.hpp"
 
 namespace impact {
 

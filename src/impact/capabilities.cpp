@@ -1,10 +1,9 @@
-#include "impact/registry.hpp"
+#include "impact/capabilities.hpp"
 
 #include <stdexcept>
 #include <string>
 
 #include "impact/force.hpp"
-#include "impact/format.hpp"
 
 namespace impact {
 namespace {
@@ -93,14 +92,9 @@ std::vector<std::string_view> methods_with(bool Capabilities::*capability) {
   return names;
 }
 
-namespace {
-
-// An expression that reads u, v or an internal variable (a linear part is its own capability).
 bool expression_of_state(const Model& model) {
   return !model.expression.empty() && state_force(model);
 }
-
-}  // namespace
 
 std::string not_honoured(const MethodInfo& method, const Model& model) {
   if (model.cor && !method.can.restitution) return "it has no restitution law for floor.cor";
@@ -126,77 +120,7 @@ const MethodInfo& reference_for(const Model& model) {
   throw std::logic_error("no reference method honours this model");
 }
 
-AnyStepper make_stepper(const Model& given, double h, const MethodParams& params) {
-  const MethodInfo& method = method_info(params);
-  if (given.cor && !method.can.restitution)
-    throw std::invalid_argument("method '" + std::string(method.name) +
-                                "' has no restitution law: it cannot take a COR");
-  if (!method.can.state_force && expression_of_state(given))
-    throw std::invalid_argument("method '" + std::string(method.name) +
-                                "' takes a force of t only: force.expression reads u or v");
-  if (!method.can.linear_force && given.linear)
-    throw std::invalid_argument("method '" + std::string(method.name) +
-                                "' takes no force of the state: force.linear is given");
-  // exact follows a linear force in closed form; the others take it as the force of the state it
-  // is, an expression (force.hpp).
-  const Model model =
-      std::holds_alternative<ExactParams>(params) ? given : linear_as_expression(given);
-  if (!method.can.internal_variables && !model.internal.empty())
-    throw std::invalid_argument("method '" + std::string(method.name) +
-                                "' does not follow internal variables: [[internal]] is given");
-  if (!method.can.bonding && bonded(model))
-    throw std::invalid_argument("method '" + std::string(method.name) +
-                                "' takes no bonding field: [bonding] is given");
-  if ((std::holds_alternative<DirectParams>(params) ||
-       std::holds_alternative<FbNewtonParams>(params)) &&
-      !scheme_step_representable(h))
-    throw std::invalid_argument("method '" + std::string(method_name(params)) +
-                                "': 2/h^2 of (5-1) is not representable for h = " + shortest(h) +
-                                " (time.h must be in [1.1e-154, 9.4e153])");
-  return std::visit(
-      [&](const auto& p) -> AnyStepper {
-        using Params = std::decay_t<decltype(p)>;
-        if constexpr (std::is_same_v<Params, DirectParams>) {
-          if (p.free_flight == FreeFlightForm::paper) {
-            if (!model.internal.empty())
-              throw std::invalid_argument(
-                  "method 'direct' with free_flight = \"paper\" does not follow internal "
-                  "variables: [[internal]] is given (the closed form does)");
-            return DirectAsPrinted(model, h, p);
-          }
-          if (!model.internal.empty()) return DirectInternal(model, h, p);
-          switch (force_kind(model)) {
-            case ForceKind::constant:
-              return Direct(model, h, p);
-            case ForceKind::harmonic:
-              return DirectHarmonic(model, h, p);
-            case ForceKind::time_dependent:
-              break;
-          }
-          return DirectTimeDependent(model, h, p);
-        }
-        if constexpr (std::is_same_v<Params, FbNewtonParams>) return FbNewton(model, h, p);
-        if constexpr (std::is_same_v<Params, MoreauJeanParams>) {
-          if (!model.internal.empty()) return MoreauJeanInternal(model, h, p);
-          if (constant_force(model)) return MoreauJean(model, h, p);
-          return MoreauJeanTimeDependent(model, h, p);
-        }
-        if constexpr (std::is_same_v<Params, PenaltyParams>) return Penalty(model, h, p);
-        if constexpr (std::is_same_v<Params, ExactParams>) {
-          if (bonded(model)) return ExactBonded(model, h, p);
-          return ExactStepper(model, h, p);
-        }
-        if constexpr (std::is_same_v<Params, EventDrivenParams>) {
-          if (!model.internal.empty() || bonded(model)) return EventDrivenInternal(model, h, p);
-          return EventDriven(model, h, p);
-        }
-        if constexpr (std::is_same_v<Params, DirectLocatedParams>)
-          return DirectLocated(model, h, p);
-      },
-      params);
-}
-
-ContactLaw method_law(const Model& model, const MethodParams& params) {
+ContactLaw contact_law(const Model& model, const MethodParams& params) {
   return std::visit(
       [&](const auto& p) -> ContactLaw {
         using Params = std::decay_t<decltype(p)>;
