@@ -15,10 +15,10 @@
 #include <vector>
 
 #include "give_array.hpp"
+#include "impact/capabilities.hpp"
 #include "impact/channels.hpp"
 #include "impact/error_norms.hpp"
 #include "impact/format.hpp"
-#include "impact/registry.hpp"
 #include "impact/run.hpp"
 #include "impact/run_scene.hpp"
 #include "impact/version.hpp"

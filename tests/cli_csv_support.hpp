@@ -20,10 +20,10 @@
 #include <vector>
 
 #include "cli_support.hpp"
+#include "impact/capabilities.hpp"
 #include "impact/error_norms.hpp"
 #include "impact/model.hpp"
 #include "impact/output.hpp"
-#include "impact/registry.hpp"
 #include "impact/run.hpp"
 #include "scene/read_scene.hpp"
 

@@ -13,9 +13,9 @@
 #include <random>
 #include <string>
 
+#include "impact/any_stepper.hpp"
 #include "impact/fb_newton.hpp"
 #include "impact/output.hpp"
-#include "impact/registry.hpp"
 #include "impact/run.hpp"
 #include "impact/scene.hpp"
 

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "cli_support.hpp"
+#include "impact/any_stepper.hpp"
 #include "impact/event_log.hpp"
-#include "impact/registry.hpp"
 #include "impact/run.hpp"
 #include "impact/scene.hpp"
 #include "scene/read_scene.hpp"
@@ -274,7 +274,8 @@ TEST_CASE("bonding: a bad [bonding] value exits 2 naming the key, its value and 
   Result r = dir.run("run s.toml -o -");
   CHECK(r.code == 2);
   CHECK_THAT(r.err, Contains("s.toml") && Contains("bonding.beta0"));
-  // A method without the bonding capability (registry.hpp) refuses it, naming those that take it.
+  // A method without the bonding capability (capabilities.hpp) refuses it, naming those that take
+  // it.
   dir.write("s.toml", bonded_scene("moreau_jean", kWell));
   r = dir.run("run s.toml -o -");
   CHECK(r.code == 2);

@@ -11,9 +11,9 @@
 #include <utility>
 #include <vector>
 
+#include "impact/any_stepper.hpp"
 #include "impact/contact_law.hpp"
 #include "impact/ensemble.hpp"
-#include "impact/registry.hpp"
 #include "impact/run.hpp"
 
 using namespace impact;
@@ -54,19 +54,19 @@ TEST_CASE("each method's contact law on each kind of floor is the documented one
   for (const MethodInfo& method : methods()) {
     const std::string name(method.name);
     INFO("method " << name);
-    CHECK(method_law(floor_with(std::nullopt), method.defaults) == documented_without_cor(name));
+    CHECK(contact_law(floor_with(std::nullopt), method.defaults) == documented_without_cor(name));
     for (const double cor : {0.0, 0.5, 1.0}) {
       INFO("floor.cor = " << cor);
       if (!method.can.restitution) {
         // Compliance has no impact for a COR to act on: the law refuses one, as make_stepper does.
-        CHECK_THROWS_AS(method_law(floor_with(cor), method.defaults), std::invalid_argument);
+        CHECK_THROWS_AS(contact_law(floor_with(cor), method.defaults), std::invalid_argument);
         CHECK_THROWS_AS(make_stepper(floor_with(cor), 1e-3, method.defaults),
                         std::invalid_argument);
         // Built directly, as a library user would: it used to ignore the COR and run elastic.
         CHECK_THROWS_AS(Penalty(floor_with(cor), 1e-3, PenaltyParams{}), std::invalid_argument);
         continue;
       }
-      CHECK(method_law(floor_with(cor), method.defaults) == ContactLaw{NewtonLaw{cor}});
+      CHECK(contact_law(floor_with(cor), method.defaults) == ContactLaw{NewtonLaw{cor}});
     }
   }
 }
@@ -97,7 +97,7 @@ TEST_CASE("a drop with COR = 1 and one without COR are the same run exactly wher
     if (!method.can.restitution) continue;
     INFO("method " << method.name);
     const bool same_law =
-        method_law(without, method.defaults) == method_law(elastic, method.defaults);
+        contact_law(without, method.defaults) == contact_law(elastic, method.defaults);
     // The scheme's own law keeps some velocity of where the impact falls in its step: not Newton's
     // law with e = 1.
     CHECK(same_law == !(method.name == "direct" || method.name == "fb_newton"));
@@ -115,8 +115,8 @@ TEST_CASE("the ensemble reads the law as its single-particle steppers do", "[con
     INFO("ensemble " << name);
     Ensemble ensemble(method, models, initial, 1e-3);
     ensemble.advance(3000);
-    const bool same_law = method_law(models[0], find_method(name)->defaults) ==
-                          method_law(models[1], find_method(name)->defaults);
+    const bool same_law = contact_law(models[0], find_method(name)->defaults) ==
+                          contact_law(models[1], find_method(name)->defaults);
     const bool same_state = std::bit_cast<std::uint64_t>(ensemble.v()[0]) ==
                                 std::bit_cast<std::uint64_t>(ensemble.v()[1]) &&
                             std::bit_cast<std::uint64_t>(ensemble.u()[0]) ==

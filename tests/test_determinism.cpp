@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "impact/registry.hpp"
+#include "impact/any_stepper.hpp"
 #include "impact/run.hpp"
 #include "scene/read_scene.hpp"
 

@@ -8,10 +8,10 @@
 #include <vector>
 
 #include "analysis/fit.hpp"
+#include "impact/any_stepper.hpp"
 #include "impact/direct_located.hpp"
 #include "impact/error_norms.hpp"
 #include "impact/force.hpp"
-#include "impact/registry.hpp"
 #include "impact/run.hpp"
 #include "impact/scene.hpp"
 

@@ -14,7 +14,7 @@
 #include "analysis/error_analysis/error_analysis.hpp"
 #include "analysis/error_analysis/error_bounds.hpp"
 #include "analysis/reference.hpp"
-#include "impact/registry.hpp"
+#include "impact/any_stepper.hpp"
 #include "impact/run.hpp"
 #include "impact/scene.hpp"
 

@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
+#include "impact/any_stepper.hpp"
 #include "impact/error_norms.hpp"
 #include "impact/event_driven.hpp"
 #include "impact/exact.hpp"
-#include "impact/registry.hpp"
 #include "impact/run.hpp"
 #include "impact/scene.hpp"
 

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "cli_support.hpp"
+#include "impact/any_stepper.hpp"
 #include "impact/exact.hpp"
-#include "impact/registry.hpp"
 #include "impact/run.hpp"
 #include "impact/scene.hpp"
 

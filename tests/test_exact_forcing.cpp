@@ -11,9 +11,9 @@
 #include <numbers>
 #include <vector>
 
+#include "impact/any_stepper.hpp"
 #include "impact/event_track.hpp"
 #include "impact/exact.hpp"
-#include "impact/registry.hpp"
 #include "impact/run.hpp"
 
 using impact::Event;

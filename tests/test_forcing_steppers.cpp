@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "analysis/fit.hpp"
+#include "impact/any_stepper.hpp"
 #include "impact/ensemble.hpp"
 #include "impact/force.hpp"
-#include "impact/registry.hpp"
 #include "impact/run.hpp"
 #include "impact/run_result.hpp"
 #include "impact/scene.hpp"

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "cli_support.hpp"
+#include "impact/capabilities.hpp"
 #include "impact/force.hpp"
-#include "impact/registry.hpp"
 #include "output_support.hpp"
 #include "scene/read_scene.hpp"
 
@@ -148,7 +148,7 @@ TEST_CASE(
         const std::string channels =
             std::string(" --set 'output.channels=[\"u\",\"v\",\"N\",\"E\"") +
             (force.name == "internal variable" ? ",\"z\"" : "") + "]'";
-        // What the capability table says the method takes (registry.hpp).
+        // What the capability table says the method takes (capabilities.hpp).
         const Scene reference =
             parse_scene(scene_text("event_driven", force, cor), "s.toml", {"output.every=1"});
         if (!honours(method, reference.model)) {

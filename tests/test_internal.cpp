@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "cli_support.hpp"
+#include "impact/any_stepper.hpp"
 #include "impact/error_norms.hpp"
-#include "impact/registry.hpp"
 #include "impact/run.hpp"
 #include "impact/run_scene.hpp"
 #include "impact/scene.hpp"

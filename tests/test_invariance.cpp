@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "cli_support.hpp"
+#include "impact/any_stepper.hpp"
 #include "impact/format.hpp"
-#include "impact/registry.hpp"
 #include "impact/run_scene.hpp"
 #include "impact/scene.hpp"
 
@@ -133,7 +133,7 @@ void check_within(const Difference& d, const Tolerance& tol) {
   CHECK(d.event_v <= tol.v);
 }
 
-// The methods that take a model (honours(), registry.hpp), by their default parameters.
+// The methods that take a model (honours(), capabilities.hpp), by their default parameters.
 std::vector<const MethodInfo*> methods_for(const Model& model) {
   std::vector<const MethodInfo*> out;
   for (const MethodInfo& m : methods())

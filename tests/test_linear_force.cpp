@@ -12,8 +12,8 @@
 
 #include "check_near.hpp"
 #include "cli_support.hpp"
+#include "impact/any_stepper.hpp"
 #include "impact/force.hpp"
-#include "impact/registry.hpp"
 #include "impact/run_scene.hpp"
 #include "impact/scene.hpp"
 #include "scene/read_scene.hpp"

@@ -11,8 +11,8 @@
 #include <utility>
 #include <variant>
 
+#include "impact/any_stepper.hpp"
 #include "impact/penalty.hpp"
-#include "impact/registry.hpp"
 #include "scene/read_scene.hpp"
 
 namespace {

@@ -6,9 +6,9 @@
 #include <cmath>
 #include <cstdint>
 
+#include "impact/any_stepper.hpp"
 #include "impact/error_norms.hpp"
 #include "impact/exact.hpp"
-#include "impact/registry.hpp"
 #include "impact/run.hpp"
 
 using impact::Model;

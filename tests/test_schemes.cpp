@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "analysis/tolerances.hpp"
+#include "impact/any_stepper.hpp"
 #include "impact/output.hpp"
-#include "impact/registry.hpp"
 #include "impact/run.hpp"
 #include "scene/read_scene.hpp"
 #include "trajectory_support.hpp"

@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "impact/any_stepper.hpp"
 #include "impact/force.hpp"
 #include "impact/harmonic_series.hpp"
-#include "impact/registry.hpp"
 #include "impact/run.hpp"
 
 using impact::Model;

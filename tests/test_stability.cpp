@@ -21,10 +21,10 @@
 #include "analysis/stability/stability_cases.hpp"
 #include "analysis/stability/stability_penalty.hpp"
 #include "analysis/stability/stability_study.hpp"
+#include "impact/any_stepper.hpp"
 #include "impact/fb_newton.hpp"
 #include "impact/gsl_errors.hpp"
 #include "impact/output.hpp"
-#include "impact/registry.hpp"
 #include "impact/run.hpp"
 #include "stability_properties.hpp"
 

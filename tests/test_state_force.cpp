@@ -9,9 +9,9 @@
 
 #include "analysis/fit.hpp"
 #include "cli_support.hpp"
+#include "impact/any_stepper.hpp"
 #include "impact/error_norms.hpp"
 #include "impact/force.hpp"
-#include "impact/registry.hpp"
 #include "impact/run.hpp"
 #include "impact/scene.hpp"
 #include "output_support.hpp"

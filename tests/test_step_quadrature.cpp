@@ -9,8 +9,8 @@
 #include <string>
 
 #include "cli_support.hpp"
+#include "impact/any_stepper.hpp"
 #include "impact/force.hpp"
-#include "impact/registry.hpp"
 #include "impact/run.hpp"
 #include "impact/step_quadrature.hpp"
 

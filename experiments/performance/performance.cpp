@@ -26,9 +26,9 @@
 
 #include "analysis/experiment.hpp"
 #include "analysis/markdown.hpp"
+#include "impact/any_stepper.hpp"
 #include "impact/ensemble.hpp"
 #include "impact/output.hpp"
-#include "impact/registry.hpp"
 #include "impact/run.hpp"
 #include "performance_cli.hpp"
 #include "performance_forced.hpp"

@@ -7,7 +7,7 @@
 
 #include "analysis/experiment.hpp"
 #include "analysis/work_precision_reference.hpp"
-#include "impact/registry.hpp"
+#include "impact/any_stepper.hpp"
 #include "impact/run.hpp"
 #include "scene/read_scene.hpp"
 

@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "analysis/experiment.hpp"
+#include "impact/any_stepper.hpp"
 #include "impact/direct.hpp"
 #include "impact/output.hpp"
-#include "impact/registry.hpp"
 #include "impact/run.hpp"
 #include "performance_cli.hpp"
 #include "scene/read_scene.hpp"

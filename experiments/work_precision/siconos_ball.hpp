@@ -1,4 +1,4 @@
-// The paper's particle in Siconos, behind the project's stepper interface (registry.hpp:
+// The paper's particle in Siconos, behind the project's stepper interface (stepper.hpp:
 // initialize, do_step), so that the error measures and the timing of work_precision.hpp run it
 // like the project's own solvers: a LagrangianLinearTIDS of mass 1, the relation y = u - phi >= 0,
 // Newton's impact law v+ = -e v- with e = COR, and e = 1 without one (as `exact` and `moreau_jean`

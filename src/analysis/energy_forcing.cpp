@@ -7,6 +7,7 @@
 
 #include "analysis/laplace.hpp"
 #include "analysis/tolerances.hpp"
+#include "impact/any_stepper.hpp"
 #include "impact/run.hpp"
 #include "impact/work_energy.hpp"
 

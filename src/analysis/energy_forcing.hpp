@@ -14,9 +14,9 @@
 #include <span>
 #include <vector>
 
+#include "impact/capabilities.hpp"
 #include "impact/force.hpp"
 #include "impact/model.hpp"
-#include "impact/registry.hpp"
 #include "impact/scheme_flight.hpp"
 
 namespace impact {

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "analysis/quadrature.hpp"
+#include "impact/any_stepper.hpp"
 #include "impact/output.hpp"
 #include "impact/run.hpp"
 

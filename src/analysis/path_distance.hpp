@@ -9,9 +9,9 @@
 #include <type_traits>
 #include <variant>
 
+#include "impact/any_stepper.hpp"
 #include "impact/exact.hpp"
 #include "impact/model.hpp"
-#include "impact/registry.hpp"
 #include "impact/run.hpp"
 #include "impact/scene.hpp"
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "impact/registry.hpp"
+#include "impact/any_stepper.hpp"
 #include "impact/run.hpp"
 
 namespace impact {

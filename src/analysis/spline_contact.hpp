@@ -47,7 +47,6 @@ class SplineImpact {
 
   double t_star() const { return t_star_; }
   double eps() const { return eps_; }
-  SecondPiece second_piece() const { return second_; }
 
   // d^order/dr^order (order 0..3) of piece p's formula at local time r = t - t*, for any r
   // (the formula, not S_eps: no switch to another piece).

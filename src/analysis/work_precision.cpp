@@ -1,12 +1,14 @@
 #include "analysis/work_precision.hpp"
 
 #include <cmath>
+#include <cstddef>
 #include <cstdlib>
 #include <ctime>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 
-#include "impact/registry.hpp"
+#include "impact/any_stepper.hpp"
 
 namespace impact {
 
@@ -16,18 +18,27 @@ double cpu_seconds() {
   return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
 }
 
-std::string_view measure_name(ErrorMeasure m) {
-  switch (m) {
-    case ErrorMeasure::sup_u:
-      return "sup_u";
-    case ErrorMeasure::l1_v:
-      return "l1_v";
-    case ErrorMeasure::energy_end:
-      return "energy_end";
-    case ErrorMeasure::first_impact:
-      return "first_impact";
-  }
-  return "";
+namespace {
+
+// In ErrorMeasure's order, so that measure_info() indexes by it.
+constexpr MeasureInfo kMeasures[] = {
+    {ErrorMeasure::sup_u, "sup_u", "max_l |u^l - u(t_l)| [m]"},
+    {ErrorMeasure::l1_v, "l1_v", "h sum_l |v^l - v(t_l)| [m]"},
+    {ErrorMeasure::energy_end, "energy_end", "|E^n - E(T)| [m^2/s^2]"},
+    {ErrorMeasure::first_impact, "first_impact", "|t_1,h - t_1| [s]"},
+};
+static_assert(std::size(kMeasures) == std::size(kErrorMeasures) && [] {
+  for (std::size_t i = 0; i < std::size(kMeasures); ++i)
+    if (kMeasures[i].measure != kErrorMeasures[i] ||
+        static_cast<std::size_t>(kErrorMeasures[i]) != i)
+      return false;
+  return true;
+}());
+
+}  // namespace
+
+const MeasureInfo& measure_info(ErrorMeasure m) {
+  return kMeasures[static_cast<std::size_t>(m)];
 }
 
 double error_of(const ErrorNorms& e, ErrorMeasure m) {

@@ -52,7 +52,17 @@ SolveCost time_solve(Make&& make, const State& initial, const Grid& grid, const 
 enum class ErrorMeasure { sup_u, l1_v, energy_end, first_impact };
 inline constexpr ErrorMeasure kErrorMeasures[] = {
     ErrorMeasure::sup_u, ErrorMeasure::l1_v, ErrorMeasure::energy_end, ErrorMeasure::first_impact};
-std::string_view measure_name(ErrorMeasure m);
+// One row per measure (work_precision.cpp's table): its name, as the CSV columns and the report's
+// keys say it, and its axis label with its unit (plot.gp's mlabel(), without enhanced text).
+struct MeasureInfo {
+  ErrorMeasure measure;
+  std::string_view name;
+  std::string_view axis_label;
+};
+const MeasureInfo& measure_info(ErrorMeasure m);
+inline std::string_view measure_name(ErrorMeasure m) {
+  return measure_info(m).name;
+}
 // The measure as a non-negative number (|first impact time error|; NaN when there is none).
 double error_of(const ErrorNorms& e, ErrorMeasure m);
 

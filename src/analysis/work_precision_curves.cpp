@@ -4,8 +4,8 @@
 #include <stdexcept>
 
 #include "analysis/work_precision_reference.hpp"
+#include "impact/any_stepper.hpp"
 #include "impact/exact.hpp"
-#include "impact/registry.hpp"
 #include "scene/read_scene.hpp"
 
 namespace impact {

@@ -3,9 +3,9 @@
 #include <stdexcept>
 #include <string>
 
+#include "impact/any_stepper.hpp"
 #include "impact/event_log.hpp"
 #include "impact/events.hpp"
-#include "impact/registry.hpp"
 #include "impact/run.hpp"
 
 namespace impact {

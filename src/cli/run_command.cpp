@@ -8,9 +8,9 @@
 #include <string>
 
 #include "cli/progress.hpp"
+#include "impact/capabilities.hpp"
 #include "impact/event_log.hpp"
 #include "impact/output.hpp"
-#include "impact/registry.hpp"
 #include "impact/run_scene.hpp"
 #include "scene/provenance.hpp"
 #include "scene/read_scene.hpp"

@@ -27,21 +27,6 @@ std::string style(const std::string& method) {
          " lc rgb '" + colour + "'";
 }
 
-// The axis label of each measure, with its unit (plot.gp's mlabel(), without enhanced text).
-std::string label(ErrorMeasure m) {
-  switch (m) {
-    case ErrorMeasure::sup_u:
-      return "max_l |u^l - u(t_l)| [m]";
-    case ErrorMeasure::l1_v:
-      return "h sum_l |v^l - v(t_l)| [m]";
-    case ErrorMeasure::energy_end:
-      return "|E^n - E(T)| [m^2/s^2]";
-    case ErrorMeasure::first_impact:
-      return "|t_1,h - t_1| [s]";
-  }
-  return "";
-}
-
 }  // namespace
 
 Figure work_precision_figure(const std::vector<impact::Curve>& curves, const std::string& reference,
@@ -55,7 +40,8 @@ Figure work_precision_figure(const std::vector<impact::Curve>& curves, const std
   figure.key = true;
   for (const bool against_cost : {true, false})
     for (const ErrorMeasure m : kErrorMeasures) {
-      Panel panel{against_cost ? "CPU time of a solve [s]" : "step h [s]", label(m), true, true};
+      Panel panel{against_cost ? "CPU time of a solve [s]" : "step h [s]",
+                  std::string(measure_info(m).axis_label), true, true};
       for (const impact::Curve& c : curves) {
         Series s;
         s.with = style(c.name);

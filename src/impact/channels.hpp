@@ -1,5 +1,5 @@
 // The channels a run can write (a row's columns after t), once: their names, what each is, and the
-// capability a method needs to write it (registry.hpp). The scene reader, the help and the CSV
+// capability a method needs to write it (capabilities.hpp). The scene reader, the help and the CSV
 // writer read this table.
 #pragma once
 
@@ -8,8 +8,9 @@
 #include <span>
 #include <string_view>
 
-#include "impact/registry.hpp"
-#include "impact/row_stream.hpp"
+#include "impact/capabilities.hpp"
+#include "impact/model.hpp"
+#include "impact/row.hpp"
 
 namespace impact {
 
@@ -40,7 +41,7 @@ inline std::string_view channel_name(Channel channel) {
 // Whether `method` can write `channel`.
 bool can_write(const MethodInfo& method, Channel channel);
 
-// A row's value of `channel` (row_stream.hpp), as the CSV writes it; iterations as a double.
+// A row's value of `channel` (row.hpp), as the CSV writes it; iterations as a double.
 double channel_value(const OutputRow& row, Channel channel);
 
 }  // namespace impact

@@ -6,6 +6,7 @@
 #include <type_traits>
 
 #include "impact/free_flight.hpp"
+#include "impact/method_params.hpp"
 #include "impact/model.hpp"
 #include "impact/repeats.hpp"
 #include "impact/restitution.hpp"
@@ -75,11 +76,6 @@ template <bool Outputs = true, class Real, class Mask, class Bits>
   free_flight(s.anchor_gap, s.anchor_v, t, f, gap_free, v_free);
   direct_contact<Outputs>(s, since, gap_free, v_free, cor, has_cor, fixed_point, h, 2 / (h * h));
 }
-
-struct DirectParams {
-  FreeFlightForm free_flight = FreeFlightForm::closed_form;
-  bool operator==(const DirectParams&) const = default;
-};
 
 // What a stepper's body force needs: nothing (constant), the grid phasor (harmonic), or also an
 // expression's step integrals (time_dependent: any f(t), and a force of the state f(t, u, v),

@@ -23,14 +23,11 @@
 #include "impact/contact_law.hpp"
 #include "impact/force.hpp"
 #include "impact/free_flight.hpp"
+#include "impact/method_params.hpp"
 #include "impact/model.hpp"
 #include "impact/scheme_flight.hpp"
 
 namespace impact {
-
-struct DirectLocatedParams {
-  bool operator==(const DirectLocatedParams&) const = default;
-};
 
 // The first tau >= 0 at which the parabola g + v tau + f tau^2 / 2 (g >= 0) reaches the floor
 // moving down or at rest, and the speed there, sqrt(v^2 - 2 f g); `found` is false when it never

@@ -12,21 +12,11 @@
 
 #include "impact/event_track.hpp"
 #include "impact/events.hpp"
+#include "impact/method_params.hpp"
 #include "impact/model.hpp"
 #include "impact/ode_flight.hpp"
 
 namespace impact {
-
-struct EventDrivenParams {
-  double rtol = 1e-12;     // relative tolerance of rk8pd's error control, in (0, 1e-3]
-  double atol = 1e-14;     // absolute tolerance, in (0, 1e-3]
-  double max_step = 0.01;  // longest ODE step, > 0: caps the spacing of the force samples
-  // The events (impacts, sticks, lifts) and the ODE steps the whole run may take, then a numerical
-  // failure that says so; 0: automatic, 1e6 plus 1000 per grid step done (run_budget()).
-  std::int64_t max_events = 0;
-  std::int64_t max_ode_steps = 0;
-  bool operator==(const EventDrivenParams&) const = default;
-};
 
 class EventDriven {
  public:

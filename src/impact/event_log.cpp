@@ -11,10 +11,6 @@
 
 namespace impact {
 
-bool attach_event_sink(AnyStepper& stepper, const EventSink& sink) {
-  return std::visit([&](auto& s) { return attach_event_sink(s, sink); }, stepper);
-}
-
 EventLog::EventLog(const Model& model, double h, EventSink sink)
     : force_(model), h_(h), sink_(std::move(sink)) {}
 

@@ -25,7 +25,6 @@
 #include "impact/events.hpp"
 #include "impact/force.hpp"
 #include "impact/model.hpp"
-#include "impact/registry.hpp"
 #include "impact/stepper.hpp"
 
 namespace impact {
@@ -41,7 +40,6 @@ bool attach_event_sink(S& stepper, const EventSink& sink) {
     return false;
   }
 }
-bool attach_event_sink(AnyStepper& stepper, const EventSink& sink);
 
 // The events of a time-stepper's run by the rules above, as an observer of simulate().
 class EventLog {

@@ -35,6 +35,7 @@
 
 #include "impact/event_track.hpp"
 #include "impact/linear_law.hpp"
+#include "impact/method_params.hpp"
 #include "impact/model.hpp"
 
 namespace impact {
@@ -77,14 +78,6 @@ class ExactSolution {
   std::optional<double> t1_;  // first impact
   double V1_ = 0;             // speed just before the first impact
   std::optional<double> rest_;
-};
-
-struct ExactParams {
-  // The events a run with a harmonic force may pass (EventTrack), then a numerical failure that
-  // says so; 0: automatic, 1e6 plus 1000 per grid step done (run_budget(), event_track.hpp). A
-  // constant force costs O(1) per sample whatever its number of impacts: no bound.
-  std::int64_t max_events = 0;
-  bool operator==(const ExactParams&) const = default;
 };
 
 // The exact solution as a stepper: sampled at the grid times after the state it was initialized

@@ -8,20 +8,13 @@
 #include <string>
 
 #include "impact/free_flight.hpp"
+#include "impact/method_params.hpp"
 #include "impact/model.hpp"
 #include "impact/repeats.hpp"
 #include "impact/restitution.hpp"
 #include "impact/scheme_flight.hpp"
 
 namespace impact {
-
-struct FbNewtonParams {
-  double epsilon = 1e-15;    // smoothing parameter (paper: 1e-15)
-  double tolerance = 1e-15;  // relative residual, see FbNewton::do_step (paper: 1e-15)
-  int max_iterations = 50;
-  FreeFlightForm free_flight = FreeFlightForm::closed_form;
-  bool operator==(const FbNewtonParams&) const = default;
-};
 
 class FbNewton {
  public:

@@ -45,7 +45,6 @@ class ForceFunction {
   ~ForceFunction();
 
   bool constant() const { return !harmonic_ && !expression_; }
-  bool has_expression() const { return expression_ != nullptr; }
   // Whether the expression reads u, v or an internal variable: a force of the state.
   bool state_dependent() const { return state_dependent_; }
   // The internal variables the expression reads from now on (z_1..z_m of the model, the rest 0).

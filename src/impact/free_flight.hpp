@@ -17,13 +17,6 @@
 
 namespace impact {
 
-// How a scheme evaluates its free flight: `closed_form` from the last contact (above), or `paper`,
-// (5-1) evaluated term by term as printed at every step, u^{l+1} = h (h (N^l + f)/2 + v^l) + u^l,
-// with v^{l+1} = (2/h)(u^{l+1} - u^l) - v^l from (4-2). Both are the same discrete solution in
-// exact arithmetic; in floating point they differ by rounding, which decides, e.g., when
-// Figure 4's particle comes to rest (paper_notes/figure4.md).
-enum class FreeFlightForm { closed_form, paper };
-
 // The scheme (4-1)-(4-3) solves for N^l with the factor 2/h^2 of (5-1): for h below ~1.06e-154 it
 // overflows, above ~9.48e153 it is subnormal or 0, and the step's contact force is then inf or 0/0.
 // direct and fb_newton refuse such an h (the scene reader says so before the run).

@@ -1,9 +1,12 @@
 // The library's public API in one include, for a program that uses the installed package
-// (docs/library.md): the model, the steppers behind one interface
-// and their registry, the time loop, one run of a scene as a value (run_result.hpp), the exact
-// reference and the error norms, the ensemble, and the writers of rows and events.
+// (docs/library.md): the model, the steppers behind one interface and their table
+// (capabilities.hpp, any_stepper.hpp), the time loop, one run of a scene as a value
+// (run_result.hpp), the exact reference and the error norms, the ensemble, and the writers of rows
+// and events.
 #pragma once
 
+#include "impact/any_stepper.hpp"
+#include "impact/capabilities.hpp"
 #include "impact/chain_moreau_jean.hpp"
 #include "impact/chain_reference.hpp"
 #include "impact/contact_law.hpp"
@@ -21,7 +24,6 @@
 #include "impact/moreau_jean.hpp"
 #include "impact/output.hpp"
 #include "impact/penalty.hpp"
-#include "impact/registry.hpp"
 #include "impact/run.hpp"
 #include "impact/run_result.hpp"
 #include "impact/run_scene.hpp"

@@ -11,6 +11,7 @@
 #include <type_traits>
 
 #include "impact/contact_law.hpp"
+#include "impact/method_params.hpp"
 #include "impact/model.hpp"
 #include "impact/repeats.hpp"
 #include "impact/scheme_flight.hpp"
@@ -49,11 +50,6 @@ template <class Real>
                                                     double h) {
   moreau_jean_update(gap, v, contact_force, Real(v + h * f), e, theta, h);
 }
-
-struct MoreauJeanParams {
-  double theta = 0.5;
-  bool operator==(const MoreauJeanParams&) const = default;
-};
 
 // With a time-dependent force the step's impulse of f is its integral over the step,
 // h f^l = int_{t_l}^{t_{l+1}} f (the step mean of scheme_flight.hpp, as direct uses): the impulse

@@ -131,10 +131,6 @@ class OdeLaw {
   double rest_impulse(double a, double b) const;
   std::optional<double> chatter_window(double t, double V, double e) const;
 
-  // ODE steps taken so far, and false once an ODE step failed (GSL status).
-  long ode_steps() const { return ode_steps_; }
-  bool ode_ok() const { return ode_ok_; }
-
  private:
   struct Gsl;
   void take_step();

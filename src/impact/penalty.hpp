@@ -6,28 +6,12 @@
 
 #include <cstdint>
 #include <memory>
-#include <span>
 #include <string>
-#include <string_view>
 
+#include "impact/method_params.hpp"
 #include "impact/model.hpp"
 
 namespace impact {
-
-struct PenaltyParams {
-  double stiffness = 1e6;         // c_N
-  std::string stepper = "rk8pd";  // GSL odeiv2 stepper name
-  double rtol = 1e-10;
-  double atol = 1e-12;
-  // The ODE steps the whole run may take (a stiff contact with an implicit stepper can need 1e5
-  // per grid step, minutes for T = 1); 0: automatic, 1e6 plus 1000 per grid step done.
-  std::int64_t max_ode_steps = 0;
-
-  bool operator==(const PenaltyParams&) const = default;
-};
-
-// The names PenaltyParams::stepper accepts: every GSL odeiv2 stepper.
-std::span<const std::string_view> penalty_stepper_names();
 
 class Penalty {
  public:

@@ -15,20 +15,10 @@
 #include <functional>
 
 #include "impact/model.hpp"
+#include "impact/row.hpp"
 #include "impact/run.hpp"
 
 namespace impact {
-
-// One written row: the state at t_l = l h and what the steps since the previous row carried.
-struct OutputRow {
-  std::int64_t l = 0;
-  State state;
-  double contact_force = 0.0;   // the mean of N^j over those steps (0 at l = 0)
-  double scheme_force = 0.0;    // the mean of their scheme_force (model.hpp), where asked for
-  std::int64_t iterations = 0;  // the sum of their iterations
-  double energy = 0.0;          // E at t_l where the output asks for it (run_scene.hpp)
-  std::array<double, kMaxInternal> internal{};  // the internal variables at t_l (model.hpp)
-};
 
 // Which steps get a row: l = 0, every, 2 every, ... and always the last step.
 class RowSchedule {

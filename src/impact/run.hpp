@@ -14,7 +14,6 @@
 #include <variant>
 
 #include "impact/model.hpp"
-#include "impact/registry.hpp"
 #include "impact/repeats.hpp"
 #include "impact/stepper.hpp"
 
@@ -225,12 +224,6 @@ requires(!std::is_same_v<StateOf<S>, State>) && requires(const S& s, const State
 }
 RunSummary simulate(S& stepper, const State& initial, const Grid& grid, Observer&& observe) {
   return simulate(stepper, stepper.initial_state(initial), grid, observe);
-}
-
-template <class Observer>
-RunSummary simulate(AnyStepper& stepper, const State& initial, const Grid& grid,
-                    Observer&& observe) {
-  return std::visit([&](auto& s) { return simulate(s, initial, grid, observe); }, stepper);
 }
 
 }  // namespace impact

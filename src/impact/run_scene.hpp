@@ -8,9 +8,9 @@
 #include <cstdint>
 #include <optional>
 
+#include "impact/any_stepper.hpp"
 #include "impact/error_norms.hpp"
 #include "impact/events.hpp"
-#include "impact/registry.hpp"
 #include "impact/row_stream.hpp"
 #include "impact/run.hpp"
 #include "impact/scene.hpp"

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "impact/channels.hpp"
+#include "impact/method_params.hpp"
 #include "impact/model.hpp"
-#include "impact/registry.hpp"
 
 namespace impact {
 
@@ -44,8 +44,5 @@ struct Scene : Problem, Algorithm {
 // A scene with the given data and the default output; the grid covers [0, T] by Grid::covering.
 Scene make_scene(const Model& model, const State& initial, double T, double h,
                  const MethodParams& method);
-
-// The scene's solver (make_stepper of registry.hpp).
-AnyStepper make_stepper(const Scene& scene);
 
 }  // namespace impact

@@ -8,9 +8,8 @@
 // `using StateType = ...;`: simulate() (run.hpp) then steps that state; the type needs
 // `bool finite() const` and `std::string describe(const StateType&)` for the failure message.
 // A stepper may carry state of its own between steps (direct's free-flight anchor, fb_newton's
-// gap, penalty's ODE driver); to start from any other state, call initialize() again. Adding a
-// method: write its file (a stepper and a plain parameter struct), a row in registry.cpp, and its
-// [method] keys in src/scene/method_keys.cpp.
+// gap, penalty's ODE driver); to start from any other state, call initialize() again. What else
+// a new method touches: ARCHITECTURE.md, "Where a new thing goes".
 #pragma once
 
 #include <concepts>

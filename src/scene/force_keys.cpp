@@ -3,9 +3,9 @@
 #include <stdexcept>
 #include <string>
 
+#include "impact/capabilities.hpp"
 #include "impact/force.hpp"
 #include "impact/format.hpp"
-#include "impact/registry.hpp"
 #include "scene/toml_text.hpp"
 
 namespace impact {
@@ -196,7 +196,7 @@ void check_force(const KeyReader& r, const toml::table& root, const Scene& scene
   } catch (const std::invalid_argument& e) {
     r.fail_value("force", "expression", *expression, e.what());
   }
-  // What the method cannot honour, from the capability table (registry.hpp).
+  // What the method cannot honour, from the capability table (capabilities.hpp).
   const MethodInfo& method = method_info(scene.method);
   const std::string name(method.name);
   const toml::node& method_node = *root.get("method")->as_table()->get("name");

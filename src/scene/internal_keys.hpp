@@ -18,7 +18,7 @@ namespace impact {
 // file, the entry, the key, its value and what is allowed: an entry that is not a table, a missing
 // or unknown key, a name that is not an identifier or is taken, a value that is not finite, a rate
 // that does not parse, more than kMaxInternal entries, or a method that does not follow internal
-// variables (registry.hpp's capability).
+// variables (capabilities.hpp's capability).
 void read_internal(const KeyReader& r, const toml::table& root, Scene& scene);
 
 }  // namespace impact

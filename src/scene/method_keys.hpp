@@ -1,4 +1,4 @@
-// The [method] table of a scene, read into the method's plain parameter struct (registry.hpp):
+// The [method] table of a scene, read into the method's plain parameter struct (method_params.hpp):
 // every method's keys, ranges and meanings are here, and only here (their defaults are the
 // Params structs'); `impact run --help` prints the same table.
 #pragma once

@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include "impact/registry.hpp"
+#include "impact/any_stepper.hpp"
 #include "impact/scene.hpp"
 #include "scene_error.hpp"
 

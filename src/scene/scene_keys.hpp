@@ -17,7 +17,7 @@
 
 namespace impact {
 
-struct Capabilities;  // impact/registry.hpp
+struct Capabilities;  // impact/capabilities.hpp
 
 enum class KeyType { number, integer, name, names, text };
 
@@ -50,7 +50,7 @@ struct KeySpec {
   bool required = false;
   std::string_view also = {};  // what the reader checks beyond the range, for --help
   // A use of the key that only some methods honour, for --help: what it is, and the capability
-  // (registry.hpp) whose methods --help lists.
+  // (capabilities.hpp) whose methods --help lists.
   std::string_view only_some = {};
   bool Capabilities::*only_with = nullptr;
   std::string_view meaning = {};

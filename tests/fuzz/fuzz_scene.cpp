@@ -15,8 +15,8 @@
 #include <string_view>
 #include <vector>
 
+#include "impact/any_stepper.hpp"
 #include "impact/output.hpp"
-#include "impact/registry.hpp"
 #include "impact/run.hpp"
 #include "scene/read_scene.hpp"
 

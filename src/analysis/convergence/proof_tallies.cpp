@@ -4,6 +4,8 @@
 #include <type_traits>
 #include <variant>
 
+#include "impact/any_stepper.hpp"
+
 namespace impact::convergence {
 
 ConvergencePoint measure_convergence(const Scene& scene, const std::optional<Model>& reference) {

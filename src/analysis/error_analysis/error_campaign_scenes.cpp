@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "analysis/error_analysis/error_campaign.hpp"
+#include "impact/any_stepper.hpp"
 #include "impact/error_norms.hpp"
 #include "impact/exact.hpp"
 #include "impact/run.hpp"

@@ -5,8 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "impact/capabilities.hpp"
 #include "impact/output.hpp"
-#include "impact/registry.hpp"
 #include "scene/read_scene.hpp"
 
 namespace impact::figure3 {

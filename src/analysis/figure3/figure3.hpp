@@ -16,8 +16,8 @@
 
 namespace impact::figure3 {
 
-// Figure 3's scene `name` (no_cor or cor075) solved by `method` (a name of registry.hpp), with the
-// step h and the initial height u0 changed when given.
+// Figure 3's scene `name` (no_cor or cor075) solved by `method` (a name of capabilities.hpp), with
+// the step h and the initial height u0 changed when given.
 struct Figure3Run {
   std::string_view name;
   std::string_view method;

@@ -4,7 +4,7 @@
 #include <limits>
 #include <numbers>
 
-#include "impact/registry.hpp"
+#include "impact/any_stepper.hpp"
 #include "impact/run_scene.hpp"
 #include "impact/scene.hpp"
 

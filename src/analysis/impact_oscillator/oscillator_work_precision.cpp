@@ -6,8 +6,8 @@
 #include <stdexcept>
 
 #include "analysis/impact_oscillator/oscillator_law.hpp"
+#include "impact/any_stepper.hpp"
 #include "impact/format.hpp"
-#include "impact/registry.hpp"
 #include "impact/run.hpp"
 
 namespace impact::impact_oscillator {

@@ -1,10 +1,10 @@
 // Work against precision on the impact oscillator: every method that takes a force of the state
-// (the capability state_force of registry.hpp: direct and moreau_jean over the step h, event_driven
-// over its tolerance) on the force expression "-u - cos(omega*t)", its sup error in u against the
-// exact-flight reference (oscillator_law.hpp) at the grid times and the CPU time of its solve
-// (time_solve of work_precision.hpp). The others (exact, fb_newton, penalty, direct_located) refuse
-// the scene and are left out. A chaotic scene is run over a horizon shorter than its Lyapunov time
-// (estimate_lyapunov on two nearby runs of the scene's reference).
+// (the capability state_force of capabilities.hpp: direct and moreau_jean over the step h,
+// event_driven over its tolerance) on the force expression "-u - cos(omega*t)", its sup error in u
+// against the exact-flight reference (oscillator_law.hpp) at the grid times and the CPU time of its
+// solve (time_solve of work_precision.hpp). The others (exact, fb_newton, penalty, direct_located)
+// refuse the scene and are left out. A chaotic scene is run over a horizon shorter than its
+// Lyapunov time (estimate_lyapunov on two nearby runs of the scene's reference).
 #pragma once
 
 #include <optional>

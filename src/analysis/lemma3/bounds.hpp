@@ -16,8 +16,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "impact/any_stepper.hpp"
 #include "impact/model.hpp"
-#include "impact/registry.hpp"
 
 namespace impact::lemma3 {
 

@@ -8,9 +8,9 @@
 #include "analysis/lemma4/weak_solution.hpp"
 #include "analysis/order_table.hpp"
 #include "analysis/path_distance.hpp"
+#include "impact/any_stepper.hpp"
 #include "impact/exact.hpp"
 #include "impact/output.hpp"
-#include "impact/registry.hpp"
 #include "impact/scene.hpp"
 
 namespace impact::lemma4 {

@@ -5,9 +5,9 @@
 #include <optional>
 #include <stdexcept>
 
+#include "impact/any_stepper.hpp"
 #include "impact/exact.hpp"
 #include "impact/fb_newton.hpp"
-#include "impact/registry.hpp"
 #include "impact/run.hpp"
 
 namespace impact::stability {

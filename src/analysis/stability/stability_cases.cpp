@@ -3,8 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "impact/capabilities.hpp"
 #include "impact/output.hpp"
-#include "impact/registry.hpp"
 
 namespace impact::stability {
 namespace {

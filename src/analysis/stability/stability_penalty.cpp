@@ -2,6 +2,7 @@
 
 #include <numbers>
 
+#include "impact/any_stepper.hpp"
 #include "impact/penalty.hpp"
 #include "impact/run.hpp"
 

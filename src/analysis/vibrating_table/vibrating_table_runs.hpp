@@ -12,9 +12,9 @@
 #include <string_view>
 #include <vector>
 
+#include "impact/capabilities.hpp"
 #include "impact/events.hpp"
 #include "impact/model.hpp"
-#include "impact/registry.hpp"
 
 namespace impact::vibrating_table {
 

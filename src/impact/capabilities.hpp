@@ -1,56 +1,24 @@
-// The solvers by name: each method's parameters and stepper (the interface is stepper.hpp's
-// concept), its row in registry.cpp's table, and the factory.
+// What each method can honour and what it is: the method table (capabilities.cpp), plain data that
+// the scene reader, the help, the channels and the CLI read without including any stepper.
 #pragma once
 
 #include <span>
 #include <string>
 #include <string_view>
-#include <variant>
 #include <vector>
 
 #include "impact/contact_law.hpp"
-#include "impact/direct.hpp"
-#include "impact/direct_located.hpp"
-#include "impact/event_driven.hpp"
-#include "impact/exact.hpp"
-#include "impact/exact_bonded.hpp"
-#include "impact/fb_newton.hpp"
-#include "impact/internal_stepper.hpp"
+#include "impact/method_params.hpp"
 #include "impact/model.hpp"
-#include "impact/moreau_jean.hpp"
-#include "impact/penalty.hpp"
-#include "impact/stepper.hpp"
 
 namespace impact {
 
-// One method and its parameters: what a scene's [method] table says.
-using MethodParams = std::variant<DirectParams, FbNewtonParams, MoreauJeanParams, PenaltyParams,
-                                  ExactParams, EventDrivenParams, DirectLocatedParams>;
-
-// The methods that follow a model's internal variables (internal_stepper.hpp, event_driven.hpp):
-// their state is StateWithInternal.
-using DirectInternal = WithInternal<DirectTimeDependent>;
-using MoreauJeanInternal = WithInternal<MoreauJeanTimeDependent>;
-
-// One stepper type per method, and more for some: DirectHarmonic, DirectTimeDependent and
-// MoreauJeanTimeDependent are `direct` and `moreau_jean` with a time-dependent force,
-// DirectAsPrinted `direct` with (5-1) as printed (direct.hpp says why more than one type), and the
-// *Internal ones the methods with the model's internal variables.
-using AnyStepper =
-    std::variant<Direct, FbNewton, MoreauJean, Penalty, ExactStepper, EventDriven, DirectHarmonic,
-                 DirectTimeDependent, MoreauJeanTimeDependent, DirectAsPrinted, DirectLocated,
-                 DirectInternal, MoreauJeanInternal, EventDrivenInternal, ExactBonded>;
-static_assert([]<class... S>(std::variant<S...>*) { return (Stepper<S> && ...); }(
-                  static_cast<AnyStepper*>(nullptr)),
-              "every method's stepper has the interface of stepper.hpp");
-
-// What a method can honour and what it is: one table (registry.cpp) that the scene reader, the
+// What a method can honour and what it is: one table (capabilities.cpp) that the scene reader, the
 // help, the CLI and the analyses ask, instead of lists of names. A scene feature a method cannot
 // honour is refused (exit 2, naming the key), never ignored; a test runs every method against
 // every feature.
 struct Capabilities {
   bool restitution = false;         // floor.cor: an impact law a COR acts on
-  bool harmonic_force = false;      // force.amplitude/omega/phase
   bool time_expression = false;     // force.expression (a function of t)
   bool state_force = false;         // force.expression reads u or v: f(t, u, v)
   bool linear_force = false;        // force.linear: -k (u - u_eq) - c v beside f
@@ -75,8 +43,8 @@ struct MethodInfo {
 std::span<const MethodInfo> methods();
 // The names of the methods that have a capability, for messages ("direct, fb_newton or exact").
 std::vector<std::string_view> methods_with(bool Capabilities::*capability);
-// Whether `method` honours what `model` states (a COR, a harmonic part, an expression, one that
-// reads the state, internal variables).
+// Whether `method` honours what `model` states (a COR, an expression, one that reads the state,
+// internal variables; every method takes a harmonic part).
 bool honours(const MethodInfo& method, const Model& model);
 // Why `method` does not honour `model`, its first feature the method lacks ("it takes a force of
 // t only, and force.expression reads u or v"); empty when it honours it.
@@ -84,6 +52,9 @@ std::string not_honoured(const MethodInfo& method, const Model& model);
 // The reference for a model: the first method with `reference` that honours it (exact for a
 // constant or harmonic force, event_driven for an expression, of t or of the state).
 const MethodInfo& reference_for(const Model& model);
+// Whether the model's force expression reads u, v or an internal variable (a linear part is its
+// own capability).
+bool expression_of_state(const Model& model);
 // nullptr for an unknown name.
 const MethodInfo* find_method(std::string_view name);
 const MethodInfo& method_info(const MethodParams& params);
@@ -91,13 +62,9 @@ inline std::string_view method_name(const MethodParams& params) {
   return method_info(params).name;
 }
 
-// The solver for one model and step; throws std::invalid_argument for parameters out of range
-// and for what the method does not honour (a COR given to penalty).
-AnyStepper make_stepper(const Model& model, double h, const MethodParams& params);
-
 // The contact law a method applies to the model's floor, its family's reading of contact_law.hpp:
 // the law its stepper resolves in its constructor. Throws std::invalid_argument for a COR given to
 // penalty.
-ContactLaw method_law(const Model& model, const MethodParams& params);
+ContactLaw contact_law(const Model& model, const MethodParams& params);
 
 }  // namespace impact

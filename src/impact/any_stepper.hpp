@@ -1,0 +1,62 @@
+// The solvers chosen at run time: one variant over every method's stepper types, built from a
+// method's parameters (make_stepper), and the time loop and event sink over it. Included where a
+// method is chosen by name (the run of a scene, the CLI, the analyses, the tests); the plain data
+// (method_params.hpp, capabilities.hpp, scene.hpp) includes no stepper.
+#pragma once
+
+#include <variant>
+
+#include "impact/capabilities.hpp"
+#include "impact/direct.hpp"
+#include "impact/direct_located.hpp"
+#include "impact/event_driven.hpp"
+#include "impact/events.hpp"
+#include "impact/exact.hpp"
+#include "impact/exact_bonded.hpp"
+#include "impact/fb_newton.hpp"
+#include "impact/internal_stepper.hpp"
+#include "impact/method_params.hpp"
+#include "impact/model.hpp"
+#include "impact/moreau_jean.hpp"
+#include "impact/penalty.hpp"
+#include "impact/run.hpp"
+#include "impact/scene.hpp"
+#include "impact/stepper.hpp"
+
+namespace impact {
+
+// The methods that follow a model's internal variables (internal_stepper.hpp, event_driven.hpp):
+// their state is StateWithInternal.
+using DirectInternal = WithInternal<DirectTimeDependent>;
+using MoreauJeanInternal = WithInternal<MoreauJeanTimeDependent>;
+
+// One stepper type per method, and more for some: DirectHarmonic, DirectTimeDependent and
+// MoreauJeanTimeDependent are `direct` and `moreau_jean` with a time-dependent force,
+// DirectAsPrinted `direct` with (5-1) as printed (direct.hpp says why more than one type), and the
+// *Internal ones the methods with the model's internal variables.
+using AnyStepper =
+    std::variant<Direct, FbNewton, MoreauJean, Penalty, ExactStepper, EventDriven, DirectHarmonic,
+                 DirectTimeDependent, MoreauJeanTimeDependent, DirectAsPrinted, DirectLocated,
+                 DirectInternal, MoreauJeanInternal, EventDrivenInternal, ExactBonded>;
+static_assert([]<class... S>(std::variant<S...>*) { return (Stepper<S> && ...); }(
+                  static_cast<AnyStepper*>(nullptr)),
+              "every method's stepper has the interface of stepper.hpp");
+
+// The solver for one model and step; throws std::invalid_argument for parameters out of range
+// and for what the method does not honour (a COR given to penalty).
+AnyStepper make_stepper(const Model& model, double h, const MethodParams& params);
+
+// The scene's solver: make_stepper for its model, step and method, with event_driven told the
+// scene's end.
+AnyStepper make_stepper(const Scene& scene);
+
+template <class Observer>
+RunSummary simulate(AnyStepper& stepper, const State& initial, const Grid& grid,
+                    Observer&& observe) {
+  return std::visit([&](auto& s) { return simulate(s, initial, grid, observe); }, stepper);
+}
+
+// attach_event_sink (event_log.hpp) for the stepper the variant holds.
+bool attach_event_sink(AnyStepper& stepper, const EventSink& sink);
+
+}  // namespace impact
