@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "impact/channels.hpp"
 #include "impact/model.hpp"
 #include "impact/output.hpp"
 #include "scene/scene_error.hpp"
@@ -70,11 +71,13 @@ std::optional<std::size_t> internal_quantity(Quantity q) {
 }
 
 // The names of the model's internal variables at T: a bonded model's state carries beta and D there
-// (model.hpp), the others their [[internal]] variables.
+// (model.hpp), in the order of its channels, the others their [[internal]] variables.
 std::vector<std::string> internal_names(const Model& model) {
-  if (bonded(model)) return {"beta", "D"};
   std::vector<std::string> names;
-  for (const auto& variable : model.internal) names.push_back(variable.name);
+  if (bonded(model))
+    for (const ChannelInfo& c : bonding_channels()) names.emplace_back(c.name);
+  else
+    for (const auto& variable : model.internal) names.push_back(variable.name);
   return names;
 }
 
