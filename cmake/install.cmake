@@ -40,7 +40,8 @@ install(FILES ${IMPACT_PUBLIC_HEADERS} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/i
 # "impact/..." and each other as "name.hpp" (same directory, which resolves in the tree and
 # installed). toml++ stays the reader's own: a header here that includes it, or one of this
 # directory that is not installed, stops the configuration.
-set(IMPACT_SCENE_PUBLIC_HEADERS read_scene.hpp scene_error.hpp)
+set(IMPACT_SCENE_PUBLIC_HEADERS read_scene.hpp scene_error.hpp sweep_engine.hpp sweep_grid.hpp
+                                 sweep_quantities.hpp)
 list(TRANSFORM IMPACT_SCENE_PUBLIC_HEADERS PREPEND ${PROJECT_SOURCE_DIR}/src/scene/)
 foreach(header ${IMPACT_SCENE_PUBLIC_HEADERS})
   file(STRINGS ${header} includes REGEX "^#include [\"<]")

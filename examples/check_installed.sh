@@ -20,6 +20,8 @@ for example in bouncing_ball ensemble_sweep scene_run; do
 done
 echo "== run_scene_file drop.toml (find_package(impact 0.2 COMPONENTS scene), impact::scene)"
 "$tmp/b/run_scene_file" "$examples/drop.toml"
+echo "== sweep_scene_file drop.toml (impact::sweep(), impact::scene)"
+"$tmp/b/sweep_scene_file" "$examples/drop.toml"
 
 echo "== bouncing_ball (pkg-config --cflags --libs impact)"
 pc=$(find "$tmp/prefix" -name impact.pc)

@@ -143,9 +143,7 @@ std::string set_value(py::handle given, const std::string& what) {
 SceneSource scene_source(py::handle scene, py::handle set, py::handle method, py::handle every) {
   SceneSource source;
   if (py::isinstance<py::dict>(scene)) {
-    std::ostringstream text;
-    text << Converter("scene").table(scene);
-    source.text = text.str();
+    source.document = SceneDocument{Converter("scene").table(scene), "<dict>"};
     source.name = "<dict>";
   } else if (py::isinstance<py::str>(scene) &&
              scene.cast<std::string>().find('\n') != std::string::npos) {
@@ -171,15 +169,18 @@ SceneSource scene_source(py::handle scene, py::handle set, py::handle method, py
   return source;
 }
 
+Run load(const SceneSource& source, const std::vector<std::string>& overrides) {
+  if (source.document) return load_run(*source.document, {overrides, {}});
+  if (!source.path.empty()) return load_run(source.path, overrides);
+  return load_run(SceneText{source.text, source.name}, overrides);
+}
+
 Run load(const SceneSource& source) {
-  if (!source.path.empty()) return load_run(source.path, source.overrides);
-  Scene scene = parse_scene(source.text, source.name, source.overrides);
-  try {
-    AnyStepper stepper = make_stepper(scene);
-    return {std::move(scene), std::move(stepper), source.text};
-  } catch (const std::invalid_argument& e) {
-    throw SceneError(source.name + ": " + e.what());
-  }
+  return load(source, source.overrides);
+}
+
+const std::string& source_name(const SceneSource& source) {
+  return source.path.empty() ? source.name : source.path;
 }
 
 }  // namespace impact::python

@@ -1,21 +1,25 @@
-// How the Python module reads its `scene` argument (a path, a TOML text or a dict) and its
-// keywords (set, method, every) into the scene reader's file and --set strings, so that a scene
-// from Python is read and checked exactly as `impact run SCENE --set ...` reads it.
+// How the Python module reads its `scene` argument (a path, a TOML text or a dict, which becomes
+// a TOML document, not a text) and its keywords (set, method, every) into the scene reader's
+// source and --set strings, so that a scene from Python is read and checked exactly as
+// `impact run SCENE --set ...` reads it.
 #pragma once
 
 #include <pybind11/pybind11.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "scene/read_scene.hpp"
+#include "scene/scene_document.hpp"
 
 namespace impact::python {
 
 struct SceneSource {
-  std::string path;  // a scene file; empty when the scene is `text`
-  std::string text;  // the TOML text of a string or a dict scene
-  std::string name;  // what messages call a scene given as text: "<string>", "<dict>"
+  std::string path;  // a scene file; empty when the scene is `text` or `document`
+  std::string text;  // the TOML text of a string scene
+  std::optional<SceneDocument> document;  // a dict scene, as the TOML document it stands for
+  std::string name;  // what messages call a scene not in a file: "<string>", "<dict>"
   std::vector<std::string> overrides;
 };
 
@@ -27,8 +31,12 @@ struct SceneSource {
 SceneSource scene_source(pybind11::handle scene, pybind11::handle set, pybind11::handle method,
                          pybind11::handle every);
 
-// The scene and its stepper, or SceneError as `impact run` reports it.
+// The scene and its stepper, or SceneError as `impact run` reports it; `overrides` in place of
+// the source's own (a sweep adds its point's).
 Run load(const SceneSource& source);
+Run load(const SceneSource& source, const std::vector<std::string>& overrides);
+// What messages call the scene: its path, or its name.
+const std::string& source_name(const SceneSource& source);
 
 // The text of a --set value: TOML's spelling of a bool or a number (a float in round-trip
 // precision; a NumPy scalar as the number it holds) or of a list, a string as it is (the reader

@@ -1,5 +1,5 @@
-// impact.sweep(): `impact sweep` from Python, by the command's own engine
-// (src/cli/sweep_runner.cpp).
+// impact.sweep(): `impact sweep` from Python, by the same engine (impact::sweep(),
+// src/scene/sweep_engine.hpp), its columns as NumPy arrays.
 #pragma once
 
 #include <pybind11/pybind11.h>

@@ -11,10 +11,10 @@
 
 #include "cli/progress.hpp"
 #include "cli/sweep_csv.hpp"
-#include "cli/sweep_runner.hpp"
 #include "impact/ensemble.hpp"
 #include "impact/output.hpp"
 #include "scene/provenance.hpp"
+#include "scene/sweep_engine.hpp"
 #include "scene/sweep_grid.hpp"
 
 namespace impact::cli {
@@ -146,8 +146,22 @@ int run_sweep(const SweepOptions& o) {
   std::fputs(head.c_str(), file.stream());
 
   // Progress only where someone watches it: stderr is a terminal that the CSV does not go to.
-  const SweepRun run = run_points(grid, quantities, against, shard, threads, o.instruction_set,
-                                  file, !o.quiet && isatty(2) && !(to_stdout && isatty(1)));
+  Progress shown(!o.quiet && isatty(2) && !(to_stdout && isatty(1)), shard_points(grid, shard),
+                 Clock::now(), "impact sweep", "points", true);
+  const auto rows = [&](SweepChunk& chunk) {
+    RowWriter writer(grid, quantities);
+    for (std::size_t p = 0; p < chunk.results.size(); ++p)
+      writer.append(chunk.text, shard.k + (chunk.first + static_cast<std::int64_t>(p)) * shard.n,
+                    chunk.results[p]);
+  };
+  const auto write = [&](SweepChunk&& chunk) {
+    std::fwrite(chunk.text.data(), 1, chunk.text.size(), file.stream());
+    file.check();  // a full disk stops the sweep here
+  };
+  const SweepRun run =
+      run_points(grid, {quantities, against, shard, threads, o.instruction_set, {}},
+                 {rows, write, [&](std::int64_t done) { shown.update(done); }});
+  shown.finish();
   const double seconds = seconds_since(start);
   char line[256];
   std::snprintf(

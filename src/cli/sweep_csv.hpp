@@ -1,5 +1,5 @@
-// The CSV of `impact sweep`: the summary quantities a user can ask for, one row per point, and the
-// first line that marks a shard's part so that `impact sweep --merge` can check and join parts.
+// The CSV of `impact sweep`: one row per point (its quantities: scene/sweep_quantities.hpp), and
+// the first line that marks a shard's part so that `impact sweep --merge` can check and join parts.
 #pragma once
 
 #include <cstdint>
@@ -8,55 +8,10 @@
 #include <string_view>
 #include <vector>
 
-#include "impact/summary.hpp"
 #include "scene/sweep_grid.hpp"
+#include "scene/sweep_quantities.hpp"
 
 namespace impact::cli {
-
-// The quantities, in the order of the default --summary (which leaves out the times wall_s and
-// reference_s, so that the default output is the same bytes on every run, and the errors unless
-// --against exact).
-enum class Quantity {
-  u_T,
-  v_T,
-  E_T,
-  contact_steps,
-  impacts,
-  first_impact_time,
-  rest_time,
-  max_u,
-  iterations,
-  z1_T,  // the internal variables at the last grid time, named after them (NAME_T)
-  z2_T,
-  z3_T,
-  z4_T,
-  wall_s,
-  err_u_sup,
-  err_v_l1,
-  err_E_T,
-  err_internal_sup,
-  err_first_impact,
-  reference_s,
-};
-
-// "name  what it is" lines for --help.
-std::string quantities_help();
-// Parses "rest_time,E_T"; empty text gives the default (with the model's internal variables,
-// NAME_T for each, and err_internal_sup with --against exact). Throws SceneError for an unknown
-// name, a name listed twice, or an error measure without --against exact.
-std::vector<Quantity> parse_summary(const std::string& list, bool against_exact,
-                                    const Model& model = {});
-// A name, as in the header: NAME_T for an internal variable of `model`.
-std::string quantity_name(Quantity q, const Model& model = {});
-// Whether `name` is a quantity's name (NAME_T as z1_T..z4_T).
-bool is_quantity_name(std::string_view name);
-
-// What one point gave: its summary, or why it failed (a NumericalError's message).
-struct PointResult {
-  std::optional<PointOutcome> outcome;
-  std::string failure;
-  double wall_s = 0;
-};
 
 // "time.h,rest_time,E_T,failure\n": the varied keys, the quantities, the failure reason.
 std::string csv_header(const SweepGrid& grid, const std::vector<Quantity>& quantities);

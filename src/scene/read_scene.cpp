@@ -22,6 +22,7 @@
 #include "scene/key_reader.hpp"
 #include "scene/method_keys.hpp"
 #include "scene/overrides.hpp"
+#include "scene/scene_document.hpp"
 #include "scene/scene_keys.hpp"
 #include "scene/suggest.hpp"
 #include "scene/toml_text.hpp"
@@ -221,16 +222,36 @@ Scene read_scene(const SceneText& text, const SceneEdits& edits) {
   return parse_scene(text.text, text.source, edits.set, edits.unset);
 }
 
-Run load_run(const std::string& path, const std::vector<std::string>& overrides,
-             const std::vector<std::string>& unsets) {
-  std::string text = read_scene_file(path);
-  Scene scene = parse_scene(text, path, overrides, unsets);
+namespace {
+
+// The stepper of a scene the reader accepted, `text` kept for the record.
+Run with_stepper(Scene scene, const std::string& source, std::string text) {
   try {
     AnyStepper stepper = make_stepper(scene);
     return {std::move(scene), std::move(stepper), std::move(text)};
   } catch (const std::invalid_argument& e) {
-    throw SceneError(path + ": " + e.what());  // the reader's ranges should have caught it
+    // the reader's ranges should have caught it
+    throw SceneError(source + ": " + e.what());
   }
+}
+
+}  // namespace
+
+Run load_run(const SceneText& text, const std::vector<std::string>& overrides,
+             const std::vector<std::string>& unsets) {
+  return with_stepper(parse_scene(text.text, text.source, overrides, unsets), text.source,
+                      std::string(text.text));
+}
+
+Run load_run(const SceneDocument& document, const SceneEdits& edits) {
+  return with_stepper(parse_with(document.root, document.source, edits.set, edits.unset),
+                      document.source, "");
+}
+
+Run load_run(const std::string& path, const std::vector<std::string>& overrides,
+             const std::vector<std::string>& unsets) {
+  const std::string text = read_scene_file(path);
+  return load_run(SceneText{text, path}, overrides, unsets);
 }
 
 }  // namespace impact

@@ -60,5 +60,11 @@ struct Run {
 };
 Run load_run(const std::string& path, const std::vector<std::string>& overrides = {},
              const std::vector<std::string>& unsets = {});
+Run load_run(const SceneText& text, const std::vector<std::string>& overrides = {},
+             const std::vector<std::string>& unsets = {});
+// The same for a TOML document in memory (scene_document.hpp, which is not installed: it includes
+// toml++); Run::text is empty, as there is no text.
+struct SceneDocument;
+Run load_run(const SceneDocument& document, const SceneEdits& edits = {});
 
 }  // namespace impact

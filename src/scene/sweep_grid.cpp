@@ -153,7 +153,20 @@ std::vector<std::string> sweep_keys() {
 
 SweepGrid::SweepGrid(const std::string& scene_path, const std::vector<std::string>& overrides,
                      std::vector<SweepAxis> axes)
-    : path_(scene_path), overrides_(overrides), axes_(std::move(axes)) {
+    : SweepGrid(
+          scene_path,
+          [&](const std::vector<std::string>& all) { return load_run(scene_path, all); }, overrides,
+          std::move(axes)) {}
+
+SweepGrid::SweepGrid(const SceneText& scene, const std::vector<std::string>& overrides,
+                     std::vector<SweepAxis> axes)
+    : SweepGrid(
+          scene.source, [&](const std::vector<std::string>& all) { return load_run(scene, all); },
+          overrides, std::move(axes)) {}
+
+SweepGrid::SweepGrid(const std::string& source, const Loader& load,
+                     const std::vector<std::string>& overrides, std::vector<SweepAxis> axes)
+    : path_(source), overrides_(overrides), axes_(std::move(axes)) {
   const auto& names = numeric_key_names();
   for (const SweepAxis& axis : axes_) {
     if (std::find(names.begin(), names.end(), axis.key()) == names.end() &&
@@ -182,7 +195,7 @@ SweepGrid::SweepGrid(const std::string& scene_path, const std::vector<std::strin
   try {
     std::vector<std::string> all = overrides_;
     for (const std::string& o : this->overrides(0)) all.push_back(o);
-    Run read = load_run(path_, all);
+    Run read = load(all);
     base_ = std::move(read.scene);
     text_ = std::move(read.text);
   } catch (const SceneError& e) {

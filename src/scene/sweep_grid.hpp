@@ -6,13 +6,15 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "impact/scene.hpp"
-#include "scene/scene_error.hpp"
+#include "read_scene.hpp"
+#include "scene_error.hpp"
 
 namespace impact {
 
@@ -55,10 +57,18 @@ class SweepGrid {
   // why the checks are complete).
   SweepGrid(const std::string& scene_path, const std::vector<std::string>& overrides,
             std::vector<SweepAxis> axes);
+  // The same for a scene's text in memory (named in messages by its source).
+  SweepGrid(const SceneText& scene, const std::vector<std::string>& overrides,
+            std::vector<SweepAxis> axes);
+  // The same for a scene that `load` reads with the --set strings it is given (a program's own
+  // source, such as a TOML document built in memory); `source` names it in messages.
+  using Loader = std::function<Run(const std::vector<std::string>&)>;
+  SweepGrid(const std::string& source, const Loader& load,
+            const std::vector<std::string>& overrides, std::vector<SweepAxis> axes);
 
   std::int64_t size() const { return size_; }
   const std::vector<SweepAxis>& axes() const { return axes_; }
-  // The scene file's text, as read.
+  // The scene's text, as read.
   const std::string& scene_text() const { return text_; }
   // Point 0's scene.
   const Scene& base() const { return base_; }

@@ -1,4 +1,4 @@
-#include "cli/sweep_runner.hpp"
+#include "scene/sweep_engine.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -6,6 +6,7 @@
 #include <condition_variable>
 #include <cstdio>
 #include <exception>
+#include <limits>
 #include <mutex>
 #include <new>
 #include <optional>
@@ -15,12 +16,14 @@
 #include <thread>
 #include <tuple>
 
-#include "cli/progress.hpp"
+#include "impact/format.hpp"
 #include "impact/run_result.hpp"
 #include "impact/summary.hpp"
 
-namespace impact::cli {
+namespace impact {
 namespace {
+
+using Clock = std::chrono::steady_clock;
 
 // Points per chunk, the unit a thread takes: 192 fills the ensemble's padding (ensemble.cpp)
 // exactly.
@@ -33,14 +36,15 @@ constexpr std::int64_t kMinEnsemble = 64;
 // Runs the chunks of a sweep: chunk c is the shard's points c * chunk ... c * chunk + chunk - 1.
 class Runner {
  public:
-  Runner(const SweepGrid& grid, const std::vector<Quantity>& quantities, bool against_exact,
-         Shard shard, const std::string& instruction_set, const SweepPoll& poll)
+  Runner(const SweepGrid& grid, const SweepSetup& setup)
       : grid_(grid),
-        quantities_(quantities),
-        against_(against_exact),
-        shard_(shard),
-        instruction_set_(instruction_set),
-        poll_(poll) {
+        against_(setup.against_exact),
+        shard_(setup.shard),
+        instruction_set_(setup.instruction_set),
+        poll_(setup.poll) {
+    const bool against_exact = setup.against_exact;
+    const Shard& shard = setup.shard;
+    const std::vector<Quantity>& quantities = setup.quantities;
     points_ = shard_points(grid, shard);
     // Points on one grid must be close in the order to share a chunk: a sweep whose grid changes
     // every few points runs point by point, in chunks small enough for every thread to get some.
@@ -61,14 +65,10 @@ class Runner {
   std::int64_t chunks() const { return (points_ + chunk_ - 1) / chunk_; }
   std::int64_t chunk_size(std::int64_t c) const { return std::min(chunk_, points_ - c * chunk_); }
 
-  struct Output {
-    std::string text;
-    std::int64_t failed = 0;
-  };
-
-  Output run_chunk(std::int64_t c) const {
+  SweepChunk run_chunk(std::int64_t c) const {
     const std::int64_t first = c * chunk_, count = chunk_size(c);
-    std::vector<PointResult> results(static_cast<std::size_t>(count));
+    SweepChunk out{first, std::vector<PointResult>(static_cast<std::size_t>(count)), {}, 0};
+    std::vector<PointResult>& results = out.results;
     std::vector<Candidate> candidates;
     Scene scene = grid_.base();
     for (std::int64_t p = 0; p < count; ++p) {
@@ -81,13 +81,7 @@ class Runner {
         run_alone(scene, results[static_cast<std::size_t>(p)]);
     }
     run_together(first, candidates, results);
-    Output out;
-    RowWriter rows(grid_, quantities_);
-    for (std::int64_t p = 0; p < count; ++p) {
-      const PointResult& r = results[static_cast<std::size_t>(p)];
-      out.failed += !r.outcome;
-      rows.append(out.text, point(first + p), r);
-    }
+    for (const PointResult& r : results) out.failed += !r.outcome;
     return out;
   }
 
@@ -174,7 +168,6 @@ class Runner {
   }
 
   const SweepGrid& grid_;
-  const std::vector<Quantity>& quantities_;
   bool against_;
   Shard shard_;
   const std::string& instruction_set_;
@@ -185,10 +178,13 @@ class Runner {
 };
 
 // At most 4 chunks per thread wait to be written (flat memory).
-std::int64_t run_chunks(const Runner& runner, int threads, AtomicFile& file, Progress& progress,
+std::int64_t run_chunks(const Runner& runner, int threads, const SweepSink& sink,
                         const std::function<void()>& poll) {
+  const auto progress = [&](std::int64_t done) {
+    if (sink.progress) sink.progress(done);
+  };
   const std::int64_t chunks = runner.chunks(), window = 4 * static_cast<std::int64_t>(threads);
-  std::vector<Runner::Output> slots(static_cast<std::size_t>(window));
+  std::vector<SweepChunk> slots(static_cast<std::size_t>(window));
   std::vector<char> ready(static_cast<std::size_t>(window), 0);
   std::mutex mutex;
   std::condition_variable changed;
@@ -205,7 +201,8 @@ std::int64_t run_chunks(const Runner& runner, int threads, AtomicFile& file, Pro
         c = next++;
       }
       try {
-        Runner::Output out = runner.run_chunk(c);
+        SweepChunk out = runner.run_chunk(c);
+        if (sink.prepare) sink.prepare(out);
         std::lock_guard lock(mutex);
         slots[static_cast<std::size_t>(c % window)] = std::move(out);
         ready[static_cast<std::size_t>(c % window)] = 1;
@@ -249,7 +246,7 @@ std::int64_t run_chunks(const Runner& runner, int threads, AtomicFile& file, Pro
   const Stop stopper{mutex, changed, stop};
   std::int64_t failed = 0, done = 0;
   for (std::int64_t c = 0; c < chunks; ++c) {
-    Runner::Output out;
+    SweepChunk out;
     {
       std::unique_lock lock(mutex);
       const std::size_t slot = static_cast<std::size_t>(c % window);
@@ -257,7 +254,7 @@ std::int64_t run_chunks(const Runner& runner, int threads, AtomicFile& file, Pro
       while (!stop && !ready[slot])
         if (changed.wait_for(lock, tick) == std::cv_status::timeout) {
           lock.unlock();
-          progress.update(done);
+          progress(done);
           if (poll) poll();
           lock.lock();
         }
@@ -267,11 +264,10 @@ std::int64_t run_chunks(const Runner& runner, int threads, AtomicFile& file, Pro
       written = c + 1;
     }
     changed.notify_all();
-    std::fwrite(out.text.data(), 1, out.text.size(), file.stream());
-    file.check();  // a full disk stops the sweep here
     failed += out.failed;
+    if (sink.take) sink.take(std::move(out));  // a full disk stops the sweep here
     done += runner.chunk_size(c);
-    progress.update(done);
+    progress(done);
   }
   if (error) std::rethrow_exception(error);
   return failed;
@@ -283,14 +279,43 @@ std::int64_t shard_points(const SweepGrid& grid, const Shard& shard) {
   return grid.size() > shard.k ? (grid.size() - shard.k + shard.n - 1) / shard.n : 0;
 }
 
-SweepRun run_points(const SweepGrid& grid, const std::vector<Quantity>& quantities,
-                    bool against_exact, const Shard& shard, int threads,
-                    const std::string& instruction_set, AtomicFile& file, bool progress,
-                    const SweepPoll& poll) {
-  const Runner runner(grid, quantities, against_exact, shard, instruction_set, poll);
-  Progress shown(progress, runner.points(), Clock::now(), "impact sweep", "points", true);
-  const std::int64_t failed = run_chunks(runner, threads, file, shown, poll.poll);
+SweepRun run_points(const SweepGrid& grid, const SweepSetup& setup, const SweepSink& sink) {
+  if (setup.threads < 1 || setup.threads > kMaxThreads)
+    throw std::invalid_argument("sweep: " + std::to_string(setup.threads) + " threads (1 to " +
+                                std::to_string(kMaxThreads) + ")");
+  const Runner runner(grid, setup);
+  const std::int64_t failed = run_chunks(runner, setup.threads, sink, setup.poll.poll);
   return {runner.points(), failed};
 }
 
-}  // namespace impact::cli
+SweepResult sweep(const SweepGrid& grid, const SweepSetup& setup) {
+  SweepResult out;
+  for (const SweepAxis& axis : grid.axes()) out.names.push_back(axis.key());
+  for (Quantity q : setup.quantities) out.names.push_back(quantity_name(q, grid.base().model));
+  const auto points = static_cast<std::size_t>(shard_points(grid, setup.shard));
+  out.columns.assign(out.names.size(), {});
+  for (auto& column : out.columns) column.reserve(points);
+  out.failures.reserve(points);
+  const std::size_t axes = grid.axes().size();
+  const auto take = [&](SweepChunk&& chunk) {
+    for (std::size_t p = 0; p < chunk.results.size(); ++p) {
+      const std::int64_t i =
+          setup.shard.k + (chunk.first + static_cast<std::int64_t>(p)) * setup.shard.n;
+      for (std::size_t k = 0; k < axes; ++k)
+        out.columns[k].push_back(grid.axes()[k].value(grid.index(i, k)));
+      PointResult& r = chunk.results[p];
+      for (std::size_t q = 0; q < setup.quantities.size(); ++q)
+        out.columns[axes + q].push_back(
+            r.outcome ? visit_quantity(setup.quantities[q], *r.outcome, r.wall_s,
+                                       [](auto x) { return static_cast<double>(x); })
+                      : std::numeric_limits<double>::quiet_NaN());
+      out.failures.push_back(std::move(r.failure));
+    }
+  };
+  const SweepRun run = run_points(grid, setup, {{}, take, {}});
+  out.points = run.points;
+  out.failed = run.failed;
+  return out;
+}
+
+}  // namespace impact
