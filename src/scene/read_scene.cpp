@@ -89,7 +89,8 @@ const toml::node& node_at(const toml::table& root, std::string_view table, std::
 
 // Every table against the key specs (scene_keys.hpp), then what no single key can check: u0 >=
 // phi, h <= T and T/h countable, the channels the method can write, E representable. The method's
-// own keys come last, then what the method refuses of the whole scene (refusal()).
+// own keys, then what the method refuses of the whole problem (refusal()), come before the
+// channels and the checks that join keys.
 Scene build(const toml::table& root, const Origins& origins) {
   const KeyReader r(root, origins);
   std::vector<std::string_view> tables;
@@ -110,6 +111,11 @@ Scene build(const toml::table& root, const Origins& origins) {
   read_internal(r, root, scene);
   check_force(r, root, scene);
   check_bonding(r, root, scene);
+  read_method_keys(r, *root.get("method")->as_table(), scene);
+  // What the method refuses, before the channels it cannot write for that reason (an internal
+  // variable's) are named.
+  if (const auto refused = refusal(scene.method, scene.model, scene.grid.h))
+    fail_refused(r, root, scene, *refused);
   const MethodInfo& method = method_info(scene.method);
   if (const toml::node* channels = root.at_path("output.channels").node())
     read_channels(r, *channels, method, scene.model, scene.output);
@@ -122,10 +128,6 @@ Scene build(const toml::table& root, const Origins& origins) {
     r.fail(issue->table, issue->key, issue->what);
   }
   scene.grid = Grid::covering(scene.T, scene.grid.h);
-
-  read_method_keys(r, *root.get("method")->as_table(), scene);
-  if (const auto refused = refusal(scene.method, scene.model, scene.grid.h))
-    fail_refused(r, root, scene, *refused);
   return scene;
 }
 
