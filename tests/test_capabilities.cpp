@@ -4,6 +4,7 @@
 // row by row, so that a changed capability shows as a changed line here.
 #include <catch2/catch.hpp>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "cli_support.hpp"
@@ -173,4 +174,22 @@ TEST_CASE("capabilities: the table", "[capabilities]") {
   impact::Model linear;
   linear.linear = impact::LinearSpring{1.0, 0.1, 0.0};
   CHECK(impact::reference_for(linear).name == "exact");
+}
+
+// method_info() and method_of<P>() index the method table by the MethodParams alternative, and the
+// [method] keys name their method by that index: the table's rows must be in the variant's order.
+TEST_CASE("capabilities: the method table is in the order of MethodParams", "[capabilities]") {
+  REQUIRE(impact::methods().size() == std::variant_size_v<impact::MethodParams>);
+  for (std::size_t i = 0; i < impact::methods().size(); ++i) {
+    INFO(impact::methods()[i].name);
+    CHECK(impact::methods()[i].defaults.index() == i);
+    CHECK(&impact::method_info(impact::methods()[i].defaults) == &impact::methods()[i]);
+  }
+  CHECK(impact::method_of<impact::DirectParams>().name == "direct");
+  CHECK(impact::method_of<impact::FbNewtonParams>().name == "fb_newton");
+  CHECK(impact::method_of<impact::MoreauJeanParams>().name == "moreau_jean");
+  CHECK(impact::method_of<impact::PenaltyParams>().name == "penalty");
+  CHECK(impact::method_of<impact::ExactParams>().name == "exact");
+  CHECK(impact::method_of<impact::EventDrivenParams>().name == "event_driven");
+  CHECK(impact::method_of<impact::DirectLocatedParams>().name == "direct_located");
 }

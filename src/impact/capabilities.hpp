@@ -72,6 +72,11 @@ const MethodInfo& method_info(const MethodParams& params);
 inline std::string_view method_name(const MethodParams& params) {
   return method_info(params).name;
 }
+// The row of the method whose parameters are P.
+template <class P>
+const MethodInfo& method_of() {
+  return methods()[method_index<P>];
+}
 
 // The contact law a method applies to the model's floor, its family's reading of contact_law.hpp:
 // the law its stepper resolves in its constructor. Throws std::invalid_argument for a COR given to

@@ -131,7 +131,7 @@ const KeySpec* numeric_spec(const std::string& name, std::string_view method) {
   for (const auto keys : {scene_keys(), method_keys()})
     for (const KeySpec& spec : keys)
       if (numeric(spec) && full_name(spec) == name &&
-          (spec.method.empty() || spec.method == method))
+          (spec.method().empty() || spec.method() == method))
         return &spec;
   return nullptr;
 }
