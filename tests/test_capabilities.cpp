@@ -99,7 +99,7 @@ impact::Scene scene_with(const TempDir& dir, const Feature& feature) {
 
 }  // namespace
 
-TEST_CASE("capabilities: every method honours or refuses every feature, as its table says",
+TEST_CASE("capabilities: every method takes or refuses every feature, as its table says",
           "[capabilities][regression]") {
   TempDir dir;
   dir.write("s.toml", kScene);
