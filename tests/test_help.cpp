@@ -116,8 +116,8 @@ TEST_CASE("help: run --help lists every key with its default and range, from the
               impact::Scene{});
   for (const auto& spec : impact::method_keys()) {
     impact::Scene defaults;
-    defaults.method = impact::find_method(spec.method)->defaults;
-    check_row(spec, "  " + std::string(spec.method) + ":", std::string(spec.key), defaults);
+    defaults.method = impact::find_method(spec.method())->defaults;
+    check_row(spec, "  " + std::string(spec.method()) + ":", std::string(spec.key), defaults);
   }
   // What the table says is what the paper and docs/scenes.md say (a few by hand).
   CHECK_THAT(help_row(rows, "  fb_newton:", "epsilon"), Contains("1e-15") && Contains("(0, 1]"));

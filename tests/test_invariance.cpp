@@ -133,11 +133,11 @@ void check_within(const Difference& d, const Tolerance& tol) {
   CHECK(d.event_v <= tol.v);
 }
 
-// The methods that take a model (honours(), capabilities.hpp), by their default parameters.
+// The methods that take a model (refusal(), capabilities.hpp), by their default parameters.
 std::vector<const MethodInfo*> methods_for(const Model& model) {
   std::vector<const MethodInfo*> out;
   for (const MethodInfo& m : methods())
-    if (honours(m, model)) out.push_back(&m);
+    if (!refusal(m.defaults, model)) out.push_back(&m);
   return out;
 }
 

@@ -126,13 +126,13 @@ TEST_CASE("keys: the reader enforces what the key tables say", "[keys]") {
   const auto check = [&](const impact::KeySpec& spec) {
     const std::string key = std::string(spec.table) + "." + std::string(spec.key);
     std::vector<std::string> method;
-    if (!spec.method.empty()) method.push_back("method.name=" + std::string(spec.method));
+    if (!spec.method().empty()) method.push_back("method.name=" + std::string(spec.method()));
     const auto with = [&](const std::string& value) {
       auto sets = method;
       sets.push_back(key + "=" + value);
       return sets;
     };
-    INFO(key << " (" << spec.method << ")");
+    INFO(key << " (" << spec.method() << ")");
     if (spec.type == impact::KeyType::number || spec.type == impact::KeyType::integer) {
       const impact::Range& r = spec.range;
       if (r.text().empty()) return;

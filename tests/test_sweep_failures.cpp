@@ -112,3 +112,24 @@ TEST_CASE("work-precision: a step count no run can finish is refused before it s
                 "1000 --force -o wp.csv")
             .code == 0);
 }
+
+TEST_CASE("sweep failures: a point its method refuses is bad input, named before the sweep starts",
+          "[sweep][regression]") {
+  TempDir dir;
+  dir.write("s.toml",
+            "[initial]\nu0 = 0.05\nv0 = -1.0\n[force]\nf = -9.80665\n[time]\nT = 0.2\nh = 1e-3\n"
+            "[method]\nname = \"moreau_jean\"\n[bonding]\nbeta0 = 1.0\n");
+  // Point 1 has no bonding field (gamma = 0), point 2 one that moreau_jean refuses: it used to be
+  // a failed row (exit 1) after point 1 had run; the refusal is the reader's, with its key.
+  CHECK_FAILS_CLEANLY(dir, "sweep s.toml --vary bonding.gamma=0,100 -o sweep.csv", 2,
+                      Contains("point 2 of 2 (bonding.gamma=100)") &&
+                          Contains("'moreau_jean' takes no bonding field") &&
+                          Contains("use exact, event_driven"));
+  // A step (5-1) cannot take, at the one point that has it: time.h, named with its value.
+  dir.write("direct.toml",
+            "[initial]\nu0 = 0.05\nv0 = -1.0\n[force]\nf = -9.80665\n[time]\nT = 1e-150\n"
+            "h = 1e-150\n[method]\nname = \"direct\"\n");
+  CHECK_FAILS_CLEANLY(dir, "sweep direct.toml --vary time.h=1e-150,1e-160 -o sweep.csv", 2,
+                      Contains("point 2 of 2") && Contains("for h = 1e-160") &&
+                          Contains("2/h^2 of (5-1) is not representable"));
+}

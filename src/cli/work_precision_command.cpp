@@ -51,7 +51,7 @@ std::vector<std::string> parse_methods(const std::string& text, const Model& mod
       throw SceneError("--methods " + text + ": '" + name +
                        "' is not a time-stepper swept over h; the methods are " +
                        swept_method_names() + ", comma-separated");
-    if (const std::string why = not_honoured(*info, model); !why.empty())
+    if (const std::string why = refusal_reason(*info, model); !why.empty())
       throw SceneError("--methods " + text + ": " + name + " cannot run this scene: " + why +
                        " (impact run --help lists what each method honours)");
     if (std::find(names.begin(), names.end(), name) != names.end())
@@ -72,7 +72,7 @@ std::vector<std::string> default_methods(const Model& model, bool quiet) {
     const std::size_t comma = std::min(list.find(',', begin), list.size());
     const std::string name = list.substr(begin, comma - begin);
     begin = comma + 1;
-    const std::string why = not_honoured(*find_method(name), model);
+    const std::string why = refusal_reason(*find_method(name), model);
     if (why.empty())
       names.push_back(name);
     else

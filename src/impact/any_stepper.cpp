@@ -6,49 +6,20 @@
 
 #include "impact/event_log.hpp"
 #include "impact/force.hpp"
-#include "impact/format.hpp"
-#include "impact/free_flight.hpp"
 
 namespace impact {
 
 AnyStepper make_stepper(const Model& given, double h, const MethodParams& params) {
-  const MethodInfo& method = method_info(params);
-  if (given.cor && !method.can.restitution)
-    throw std::invalid_argument("method '" + std::string(method.name) +
-                                "' has no restitution law: it cannot take a COR");
-  if (!method.can.state_force && expression_of_state(given))
-    throw std::invalid_argument("method '" + std::string(method.name) +
-                                "' takes a force of t only: force.expression reads u or v");
-  if (!method.can.linear_force && given.linear)
-    throw std::invalid_argument("method '" + std::string(method.name) +
-                                "' takes no force of the state: force.linear is given");
+  if (const auto refused = refusal(params, given, h)) throw std::invalid_argument(refused->message);
   // exact follows a linear force in closed form; the others take it as the force of the state it
   // is, an expression (force.hpp).
   const Model model =
       std::holds_alternative<ExactParams>(params) ? given : linear_as_expression(given);
-  if (!method.can.internal_variables && !model.internal.empty())
-    throw std::invalid_argument("method '" + std::string(method.name) +
-                                "' does not follow internal variables: [[internal]] is given");
-  if (!method.can.bonding && bonded(model))
-    throw std::invalid_argument("method '" + std::string(method.name) +
-                                "' takes no bonding field: [bonding] is given");
-  if ((std::holds_alternative<DirectParams>(params) ||
-       std::holds_alternative<FbNewtonParams>(params)) &&
-      !scheme_step_representable(h))
-    throw std::invalid_argument("method '" + std::string(method_name(params)) +
-                                "': 2/h^2 of (5-1) is not representable for h = " + shortest(h) +
-                                " (time.h must be in [1.1e-154, 9.4e153])");
   return std::visit(
       [&](const auto& p) -> AnyStepper {
         using Params = std::decay_t<decltype(p)>;
         if constexpr (std::is_same_v<Params, DirectParams>) {
-          if (p.free_flight == FreeFlightForm::paper) {
-            if (!model.internal.empty())
-              throw std::invalid_argument(
-                  "method 'direct' with free_flight = \"paper\" does not follow internal "
-                  "variables: [[internal]] is given (the closed form does)");
-            return DirectAsPrinted(model, h, p);
-          }
+          if (p.free_flight == FreeFlightForm::paper) return DirectAsPrinted(model, h, p);
           if (!model.internal.empty()) return DirectInternal(model, h, p);
           switch (force_kind(model)) {
             case ForceKind::constant:

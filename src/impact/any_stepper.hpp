@@ -43,7 +43,7 @@ static_assert([]<class... S>(std::variant<S...>*) { return (Stepper<S> && ...); 
               "every method's stepper has the interface of stepper.hpp");
 
 // The solver for one model and step; throws std::invalid_argument for parameters out of range
-// and for what the method does not honour (a COR given to penalty).
+// and with refusal()'s message for a problem the method refuses (a COR given to penalty).
 AnyStepper make_stepper(const Model& model, double h, const MethodParams& params);
 
 // The scene's solver: make_stepper for its model, step and method, with event_driven told the

@@ -2,6 +2,7 @@
 // the scene reader, the help, the channels and the CLI read without including any stepper.
 #pragma once
 
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -43,13 +44,23 @@ struct MethodInfo {
 std::span<const MethodInfo> methods();
 // The names of the methods that have a capability, for messages ("direct, fb_newton or exact").
 std::vector<std::string_view> methods_with(bool Capabilities::*capability);
-// Whether `method` honours what `model` states (a COR, an expression, one that reads the state,
-// internal variables; every method takes a harmonic part).
-bool honours(const MethodInfo& method, const Model& model);
-// Why `method` does not honour `model`, its first feature the method lacks ("it takes a force of
-// t only, and force.expression reads u or v"); empty when it honours it.
-std::string not_honoured(const MethodInfo& method, const Model& model);
-// The reference for a model: the first method with `reference` that honours it (exact for a
+// Why a method refuses a problem: the scene key that asks for what the method cannot do (table
+// "method", key "name" when the method lacks a capability; the key itself, such as floor.cor or
+// time.h, otherwise), and the message that says so and names the methods that do take it.
+struct Refusal {
+  std::string_view table, key;
+  std::string message;
+};
+// The one decision whether `method` refuses `model` stepped with `h` (left out by a caller that
+// chooses h itself, as work-precision does): the first row of the feature table (capabilities.cpp)
+// it refuses, in the order the scene reader reports them; nullopt when it takes the problem. The
+// scene reader, the sweep's points, make_stepper and the analyses all ask this.
+std::optional<Refusal> refusal(const MethodParams& method, const Model& model,
+                               std::optional<double> h = std::nullopt);
+// The same refusal as a clause for a list of methods ("it takes a force of t only, and
+// force.expression reads u or v"); empty when `method` (by its default parameters) takes `model`.
+std::string refusal_reason(const MethodInfo& method, const Model& model);
+// The reference for a model: the first method with `reference` that takes it (exact for a
 // constant or harmonic force, event_driven for an expression, of t or of the state).
 const MethodInfo& reference_for(const Model& model);
 // Whether the model's force expression reads u, v or an internal variable (a linear part is its
@@ -60,6 +71,11 @@ const MethodInfo* find_method(std::string_view name);
 const MethodInfo& method_info(const MethodParams& params);
 inline std::string_view method_name(const MethodParams& params) {
   return method_info(params).name;
+}
+// The row of the method whose parameters are P.
+template <class P>
+const MethodInfo& method_of() {
+  return methods()[method_index<P>];
 }
 
 // The contact law a method applies to the model's floor, its family's reading of contact_law.hpp:

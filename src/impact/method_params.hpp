@@ -3,10 +3,12 @@
 // that names or holds a method (the scene, the capability table) includes this, and no stepper.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <variant>
 
 namespace impact {
@@ -77,5 +79,26 @@ struct DirectLocatedParams {
 // One method and its parameters: what a scene's [method] table says.
 using MethodParams = std::variant<DirectParams, FbNewtonParams, MoreauJeanParams, PenaltyParams,
                                   ExactParams, EventDrivenParams, DirectLocatedParams>;
+
+namespace detail {
+template <class P, class Variant>
+struct AlternativeIndex;
+template <class P, class... Alternatives>
+struct AlternativeIndex<P, std::variant<Alternatives...>> {
+  static constexpr std::size_t value = [] {
+    constexpr bool is[] = {std::is_same_v<P, Alternatives>...};
+    for (std::size_t i = 0; i < sizeof...(Alternatives); ++i)
+      if (is[i]) return i;
+    return std::variant_npos;
+  }();
+  static_assert(value != std::variant_npos, "not a method's parameters");
+};
+}  // namespace detail
+
+// P's index in MethodParams, which is its method's row in the method table (methods(),
+// capabilities.hpp; a test holds the two in step): a constant, so that a table can name a method
+// without spelling its name.
+template <class P>
+inline constexpr std::size_t method_index = detail::AlternativeIndex<P, MethodParams>::value;
 
 }  // namespace impact

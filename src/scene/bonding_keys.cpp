@@ -84,19 +84,11 @@ void check_bonding(const KeyReader& r, const toml::table& root, Scene& scene) {
     r.fail_table("bonding", where,
                  "is taken with a constant force (force.f) only: the energy E of a bonded run "
                  "with f(t) is not built yet");
-  const MethodInfo& method = method_info(scene.method);
-  const toml::node& name = *root.get("method")->as_table()->get("name");
-  if (!method.can.bonding) {
-    std::string what = "'";
-    what += method.name;
-    what += "' takes no bonding field, and [bonding] gives gamma beta0^2 != 0: use ";
-    what += join(methods_with(&Capabilities::bonding));
-    what += " (or bonding.gamma = 0 for the paper's model)";
-    r.fail_value("method", "name", name, what);
-  }
+  // Whether the method takes a bonding field is refusal()'s (capabilities.hpp), asked once the
+  // whole scene is read; whether exact can follow this one is a property of its flights.
   if (std::holds_alternative<ExactParams>(scene.method))
     if (const auto why = no_damage_well_refusal(scene.model, scene.initial))
-      r.fail_value("method", "name", name, *why);
+      r.fail_value("method", "name", *root.get("method")->as_table()->get("name"), *why);
   // Written by default, after u and v (output.channels chooses otherwise).
   for (const ChannelInfo& c : bonding_channels()) scene.output.channels.push_back(c.channel);
 }

@@ -13,9 +13,9 @@ namespace impact {
 
 // After every table is read: a bonding field that acts (gamma beta0^2 != 0) is refused beside
 // [[internal]] (the state's z holds beta and D, model.hpp), with a force other than a constant f
-// (its E would need the work of f(t) beside the bonds' energy, not built), by a method without the
-// bonding capability (capabilities.hpp), and by exact where its closed form does not hold
-// (no_damage_well_refusal, exact_bonded.hpp). Otherwise the channels beta and D join the default
+// (its E would need the work of f(t) beside the bonds' energy, not built), and by exact where its
+// closed form does not hold (no_damage_well_refusal, exact_bonded.hpp); a method without the
+// bonding capability is refusal()'s (capabilities.hpp), asked once the scene is read. Otherwise the channels beta and D join the default
 // output. Throws SceneError naming where the key came from, the key, its value and what is allowed.
 void check_bonding(const KeyReader& r, const toml::table& root, Scene& scene);
 

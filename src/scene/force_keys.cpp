@@ -109,8 +109,8 @@ const KeySpec kForceKeys[] = {
 constexpr std::string_view kHarmonicKeys[] = {"amplitude", "omega", "phase"};
 
 // force.linear: a table with at least one key, no expression beside it (the expression is the
-// whole force; -k (u - u_eq) - c v belongs inside it), and a method that takes it.
-void check_linear(const KeyReader& r, const toml::table& force, const Scene& scene) {
+// whole force; -k (u - u_eq) - c v belongs inside it). Whether the method takes it is refusal()'s.
+void check_linear(const KeyReader& r, const toml::table& force) {
   const toml::node* linear = force.get("linear");
   if (!linear) return;
   if (const toml::table* keys = linear->as_table(); keys && keys->empty())
@@ -123,13 +123,6 @@ void check_linear(const KeyReader& r, const toml::table& force, const Scene& sce
                      ": the expression gives the whole force f(t, u, v); write -k * (u - u_eq) - "
                      "c * v inside it, or give the linear part with f and the harmonic part "
                      "(with --set, --unset force.expression or --unset force.linear)");
-  const MethodInfo& method = method_info(scene.method);
-  if (!method.can.linear_force)
-    r.fail_value("method", "name", *r.table("method", true)->get("name"),
-                 "'" + std::string(method.name) +
-                     "' takes no force of the state, and force.linear adds -k (u - u_eq) - c v: "
-                     "use method.name = \"exact\", its closed-form reference (" +
-                     join(methods_with(&Capabilities::linear_force)) + " take one)");
 }
 
 }  // namespace
@@ -147,7 +140,7 @@ void check_force(const KeyReader& r, const toml::table& root, const Scene& scene
                  "or linear; leave [force] out for f = 0");
   const auto node = [&](std::string_view key) { return force->get(key); };
   const toml::node* expression = node("expression");
-  check_linear(r, *force, scene);
+  check_linear(r, *force);
   // An expression is the whole force: with f beside it, a scene that writes gravity in both
   // (as f = -g above an expression "-g + ...") would double it without a word.
   if (expression && node("f"))
@@ -174,13 +167,11 @@ void check_force(const KeyReader& r, const toml::table& root, const Scene& scene
   if (scene.model.expression.empty())  // ForceFunction reads an empty expression as none
     r.fail_value("force", "expression", *expression,
                  "the expression is empty; give a function of t, or leave the key out");
-  bool reads_state = false;
   try {
     const ForceFunction force(scene.model);
-    reads_state = force.state_dependent();
     // A force of the state where the run starts (z at its initial values), so that one that is
     // not finite there fails with the scene; a force of t alone was evaluated at t = 0 above.
-    if (reads_state) {
+    if (force.state_dependent()) {
       try {
         force.at(0.0, scene.initial);
       } catch (const std::runtime_error& e) {
@@ -196,26 +187,6 @@ void check_force(const KeyReader& r, const toml::table& root, const Scene& scene
   } catch (const std::invalid_argument& e) {
     r.fail_value("force", "expression", *expression, e.what());
   }
-  // What the method cannot honour, from the capability table (capabilities.hpp).
-  const MethodInfo& method = method_info(scene.method);
-  const std::string name(method.name);
-  const toml::node& method_node = *root.get("method")->as_table()->get("name");
-  const std::string closed_form = "' has closed-form flights for a constant or harmonic force only";
-  if (reads_state && !method.can.state_force)
-    r.fail_value(
-        "method", "name", method_node,
-        "'" + name +
-            (method.can.time_expression ? "' takes a force expression of t alone" : closed_form) +
-            ", and force.expression reads u or v, a force of the state f(t, u, v)" +
-            (method.can.time_expression ? "" : " (which has no closed-form flight)") +
-            ": use method.name = \"event_driven\", the event-driven reference for "
-            "f(t, u, v) (" +
-            join(methods_with(&Capabilities::state_force)) + " take one)");
-  if (!method.can.time_expression)
-    r.fail_value("method", "name", method_node,
-                 "'" + name + closed_form +
-                     ", and force.expression is set: use method.name = \"event_driven\", the "
-                     "event-driven reference for any f(t)");
 }
 
 }  // namespace impact

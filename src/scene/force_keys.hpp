@@ -14,11 +14,9 @@ namespace impact {
 
 // What no single [force] key can check, after every table is read: an empty [force], a harmonic
 // part without its amplitude or omega, an expression together with the harmonic keys, an
-// expression that muparser cannot evaluate at t = 0 (the message gives the position), and a
-// method that does not honour the expression as its capabilities say (capabilities.hpp): `exact`
-// with any expression (its closed-form flights need a harmonic f), the methods without state_force
-// with one that reads u or v. Throws SceneError naming where the key came from, the key, its value
-// and what is allowed.
+// expression that muparser cannot evaluate at t = 0 (the message gives the position). Whether the
+// method takes the force is refusal()'s (capabilities.hpp), asked once the whole scene is read.
+// Throws SceneError naming where the key came from, the key, its value and what is allowed.
 void check_force(const KeyReader& r, const toml::table& root, const Scene& scene);
 
 }  // namespace impact

@@ -139,13 +139,6 @@ void read_internal(const KeyReader& r, const toml::table& root, Scene& scene) {
   } catch (const std::invalid_argument& e) {
     r.fail_table("internal", where, e.what());
   }
-  const MethodInfo& method = method_info(scene.method);
-  if (!method.can.internal_variables)
-    r.fail_value("method", "name", *root.get("method")->as_table()->get("name"),
-                 "'" + std::string(method.name) +
-                     "' does not follow internal variables, and [[internal]] gives " +
-                     std::to_string(entries->size()) + ": use " +
-                     join(methods_with(&Capabilities::internal_variables)));
 }
 
 }  // namespace impact

@@ -17,8 +17,8 @@ namespace impact {
 // Fills scene.model.internal from root's [[internal]] array, if any. Throws SceneError naming the
 // file, the entry, the key, its value and what is allowed: an entry that is not a table, a missing
 // or unknown key, a name that is not an identifier or is taken, a value that is not finite, a rate
-// that does not parse, more than kMaxInternal entries, or a method that does not follow internal
-// variables (capabilities.hpp's capability).
+// that does not parse, or more than kMaxInternal entries. Whether the method follows internal
+// variables is refusal()'s (capabilities.hpp), asked once the whole scene is read.
 void read_internal(const KeyReader& r, const toml::table& root, Scene& scene);
 
 }  // namespace impact

@@ -34,7 +34,7 @@ std::string elsewhere(std::string_view table, std::string_view key) {
       return "; did you mean " + std::string(spec.table) + "." + std::string(spec.key) + "?";
   std::vector<std::string_view> methods;
   for (const KeySpec& spec : method_keys())
-    if (spec.table == table && same(spec.key)) methods.push_back(spec.method);
+    if (spec.table == table && same(spec.key)) methods.push_back(spec.method());
   if (methods.empty()) return "";
   return "; " + show_key(key) + " is a key of " + join(methods);
 }

@@ -74,9 +74,24 @@ const toml::node& node_at(const toml::table& root, std::string_view table, std::
   return *root.get(table)->as_table()->get(key);
 }
 
+// What the method refuses (capabilities.hpp), as the value of the key it names. A refusal of
+// another key than method.name names the method; where the method came from is said too when it is
+// not where that key came from ("method 'penalty' (--set method.name=penalty) has no restitution
+// law").
+[[noreturn]] void fail_refused(const KeyReader& r, const toml::table& root, const Scene& scene,
+                               const Refusal& refused) {
+  std::string message = refused.message;
+  const std::string& named = r.origins().of("method", "name");
+  const std::string method = "method '" + std::string(method_name(scene.method)) + "'";
+  if (message.starts_with(method) && named != r.origins().of(refused.table, refused.key))
+    message.insert(method.size(), " (" + named + ")");
+  r.fail_value(refused.table, refused.key, node_at(root, refused.table, refused.key), message);
+}
+
 // Every table against the key specs (scene_keys.hpp), then what no single key can check: u0 >=
-// phi, h <= T and T/h countable, the channels the method can write, E representable, and a COR
-// only for a method with an impact law. The method's own keys come last.
+// phi, h <= T and T/h countable, the channels the method can write, E representable. The method's
+// own keys, then what the method refuses of the whole problem (refusal()), come before the
+// channels and the checks that join keys.
 Scene build(const toml::table& root, const Origins& origins) {
   const KeyReader r(root, origins);
   std::vector<std::string_view> tables;
@@ -97,6 +112,11 @@ Scene build(const toml::table& root, const Origins& origins) {
   read_internal(r, root, scene);
   check_force(r, root, scene);
   check_bonding(r, root, scene);
+  read_method_keys(r, *root.get("method")->as_table(), scene);
+  // What the method refuses, before the channels it cannot write for that reason (an internal
+  // variable's) are named.
+  if (const auto refused = refusal(scene.method, scene.model, scene.grid.h))
+    fail_refused(r, root, scene, *refused);
   const MethodInfo& method = method_info(scene.method);
   if (const toml::node* channels = root.at_path("output.channels").node())
     read_channels(r, *channels, method, scene.model, scene.output);
@@ -109,24 +129,6 @@ Scene build(const toml::table& root, const Origins& origins) {
     r.fail(issue->table, issue->key, issue->what);
   }
   scene.grid = Grid::covering(scene.T, scene.grid.h);
-
-  // Compliance has no impact law to apply a COR to: refuse rather than silently run elastic.
-  if (scene.model.cor && !method.can.restitution) {
-    const std::string& named = origins.of("method", "name");
-    // The methods that take a COR and the scene's force (exact takes no expression).
-    std::vector<std::string_view> taking;
-    for (const MethodInfo& m : methods())
-      if (honours(m, scene.model)) taking.push_back(m.name);
-    const std::string last(taking.back());
-    taking.pop_back();
-    r.fail_value("floor", "cor", node_at(root, "floor", "cor"),
-                 "method '" + std::string(method.name) + "'" +
-                     (named == origins.of("floor", "cor") ? "" : " (" + named + ")") +
-                     " has no restitution law (its compliance contact is elastic); remove "
-                     "floor.cor (--unset floor.cor) or choose " +
-                     join(taking) + " or " + last);
-  }
-  read_method_keys(r, *root.get("method")->as_table(), scene);
   return scene;
 }
 

@@ -40,7 +40,7 @@ std::string resolved_scene(const Scene& scene) {
     // The method's own keys follow its name.
     if (spec.table == "method" && spec.key == "name")
       for (const KeySpec& key : method_keys())
-        if (key.method == method_name(scene.method)) add(key);
+        if (key.params == scene.method.index()) add(key);
   }
   // The internal variables, one [[internal]] table each, in the model's order.
   for (const InternalVariable& variable : scene.model.internal) {

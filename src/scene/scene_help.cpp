@@ -119,7 +119,7 @@ std::string scene_help(std::size_t width) {
     method_defaults.method = m.defaults;
     bool any = false;
     for (const KeySpec& spec : method_keys()) {
-      if (spec.method != m.name) continue;
+      if (spec.method() != m.name) continue;
       out += any ? "" : "\n";
       out += row("    " + std::string(spec.key), spec, method_defaults, width);
       any = true;

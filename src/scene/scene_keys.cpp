@@ -150,7 +150,7 @@ std::vector<std::string_view> key_names(std::string_view table, std::string_view
     if (t.name.size() > table.size() && t.name.starts_with(table) && t.name[table.size()] == '.')
       names.push_back(t.name.substr(table.size() + 1));
   for (const auto& k : method_keys())
-    if (k.table == table && k.method == method) names.push_back(k.key);
+    if (k.table == table && k.method() == method) names.push_back(k.key);
   return names;
 }
 

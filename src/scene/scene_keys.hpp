@@ -4,6 +4,7 @@
 // read through each key's accessor.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -13,6 +14,7 @@
 #include <variant>
 #include <vector>
 
+#include "impact/capabilities.hpp"
 #include "impact/scene.hpp"
 
 namespace impact {
@@ -41,9 +43,14 @@ struct Range {
 using KeyValue =
     std::variant<std::monostate, double, std::int64_t, std::string, std::vector<std::string>>;
 
+// KeySpec::params of a key that every scene reads.
+inline constexpr std::size_t kEveryScene = std::variant_npos;
+
 struct KeySpec {
   std::string_view table, key;
-  std::string_view method = {};  // [method] keys: the method that reads it; empty: every scene
+  // [method] keys: the method that reads it, as its index in MethodParams (method_index<P>, so
+  // that no name is spelt twice); kEveryScene: a key of every scene.
+  std::size_t params = kEveryScene;
   KeyType type = KeyType::number;
   Range range = {};                                          // number, integer
   std::span<const std::string_view> (*choices)() = nullptr;  // name, names
@@ -60,6 +67,11 @@ struct KeySpec {
   // as internal.NAME.key: its value in one variable.
   KeyValue (*get_variable)(const InternalVariable&) = nullptr;
   void (*set_variable)(InternalVariable&, const KeyValue&) = nullptr;
+
+  // The name of the method that reads the key; empty for a key of every scene.
+  std::string_view method() const {
+    return params == kEveryScene ? std::string_view() : methods()[params].name;
+  }
 };
 
 struct TableSpec {

@@ -131,7 +131,7 @@ const KeySpec* numeric_spec(const std::string& name, std::string_view method) {
   for (const auto keys : {scene_keys(), method_keys()})
     for (const KeySpec& spec : keys)
       if (numeric(spec) && full_name(spec) == name &&
-          (spec.method.empty() || spec.method == method))
+          (spec.method().empty() || spec.method() == method))
         return &spec;
   return nullptr;
 }
@@ -218,9 +218,10 @@ SweepGrid::SweepGrid(const std::string& source, const Loader& load,
     keys_.push_back(spec);
     variables_.push_back(variable);
   }
-  // The scene reader's checks on plain values (validate.hpp), the same functions the reader calls:
-  // every value of every axis against its key's range (a point with the other axes at their first
-  // values names it), then what joins keys, at every point.
+  // The scene reader's checks on plain values (validate.hpp, capabilities.hpp), the same functions
+  // the reader calls: every value of every axis against its key's range (a point with the other
+  // axes at their first values names it), then what joins keys and what the method refuses, at
+  // every point.
   for (std::size_t k = 0; k < axes_.size(); ++k)
     for (std::int64_t j = 0; j < axes_[k].size(); ++j)
       if (const auto wrong = check_value(*keys_[k], axes_[k].value(j)))
@@ -233,6 +234,11 @@ SweepGrid::SweepGrid(const std::string& source, const Loader& load,
     };
     if (const auto issue = cross_check(scene, shortest_value))
       fail(i, issue->table, issue->key, issue->what, issue->with_value);
+    // What the method refuses at this point (a step (5-1) cannot take, a bonding field that acts
+    // from some gamma on), as the reader refuses it. A refusal that names a [method] key shows no
+    // value: its message names the method, which is point 0's (method.name is not a number).
+    if (const auto refused = refusal(scene.method, scene.model, scene.grid.h))
+      fail(i, refused->table, refused->key, refused->message, refused->table != "method");
   }
 }
 
