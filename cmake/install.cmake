@@ -13,13 +13,13 @@ set(IMPACT_PUBLIC_HEADERS
   impact.hpp any_stepper.hpp atomic_file.hpp bonding.hpp capabilities.hpp chain.hpp
   chain_moreau_jean.hpp chain_reference.hpp channels.hpp
   contact.hpp contact_law.hpp direct.hpp direct_located.hpp ensemble.hpp
-  error_norms.hpp event_driven.hpp event_log.hpp event_track.hpp events.hpp exact.hpp
-  exact_bonded.hpp
+  error_norms.hpp event.hpp event_driven.hpp exact.hpp exact_bonded.hpp exact_march.hpp
   fb_newton.hpp flight_search.hpp force.hpp format.hpp free_flight.hpp harmonic_series.hpp
   heap_value.hpp
   internal.hpp internal_floor.hpp internal_stepper.hpp linear_flight.hpp linear_law.hpp
   method_params.hpp model.hpp moreau_jean.hpp ode_flight.hpp output.hpp penalty.hpp repeats.hpp
-  restitution.hpp row.hpp row_stream.hpp run.hpp run_result.hpp run_scene.hpp scene.hpp scheme_flight.hpp stepper.hpp
+  restitution.hpp row.hpp row_stream.hpp run.hpp run_result.hpp run_scene.hpp scene.hpp scheme_flight.hpp
+  step_events.hpp stepper.hpp
   summary.hpp summary_lanes.hpp version.hpp work_energy.hpp)
 list(TRANSFORM IMPACT_PUBLIC_HEADERS PREPEND ${PROJECT_SOURCE_DIR}/src/impact/)
 # A public header that includes a header left out would break every program that includes it:

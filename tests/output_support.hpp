@@ -14,9 +14,9 @@
 
 #include "cli_support.hpp"
 #include "impact/error_norms.hpp"
-#include "impact/event_log.hpp"
 #include "impact/output.hpp"
 #include "impact/run.hpp"
+#include "impact/step_events.hpp"
 #include "impact/work_energy.hpp"
 #include "scene/read_scene.hpp"
 
@@ -52,7 +52,7 @@ inline LibraryRun library_run(const std::string& path, const std::vector<std::st
     run.events.push_back(e);
     work.event(e);
   };
-  std::optional<EventLog> log;
+  std::optional<StepEvents> log;
   if (!attach_event_sink(loaded.stepper, sink)) log.emplace(scene.model, scene.grid.h, sink);
   simulate(loaded.stepper, scene.initial, scene.grid,
            [&](std::int64_t l, const State& s, const StepInfo& info) {

@@ -11,9 +11,9 @@
 
 #include "cli_support.hpp"
 #include "impact/any_stepper.hpp"
-#include "impact/event_log.hpp"
 #include "impact/run.hpp"
 #include "impact/scene.hpp"
+#include "impact/step_events.hpp"
 #include "scene/read_scene.hpp"
 
 using Catch::Contains;

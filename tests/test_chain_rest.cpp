@@ -17,7 +17,7 @@
 #include "impact/chain.hpp"
 #include "impact/chain_moreau_jean.hpp"
 #include "impact/chain_reference.hpp"
-#include "impact/event_track.hpp"
+#include "impact/exact_march.hpp"
 #include "impact/run.hpp"
 
 using namespace impact;

@@ -249,8 +249,8 @@ TEST_CASE("event_driven: a chatter ends in sticking within the window", "[event_
   constant.f = -kG;
   constant.cor = 0.5;
   const double t_inf = *impact::ExactSolution(constant, {1.0, 0.0}).rest_time();
-  impact::EventTrackOf<impact::OdeLaw> track(impact::OdeLaw(expression, {}), expression, {1.0, 0.0},
-                                             0.0);
+  impact::ExactMarch<impact::OdeLaw> track(impact::OdeLaw(expression, {}), expression, {1.0, 0.0},
+                                           0.0);
   std::vector<Event> events;
   track.set_event_sink([&](const Event& e) { events.push_back(e); });
   double impulse = 0;

@@ -1,4 +1,4 @@
-// `impact run --events FILE`: the events a time-stepper's steps show (event_log.hpp) and their
+// `impact run --events FILE`: the events a time-stepper's steps show (step_events.hpp) and their
 // CSV, for a bouncing ball whose impact times are known in closed form and for a particle resting
 // on the floor that a harmonic force lifts.
 #include <catch2/catch.hpp>
@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "cli_support.hpp"
-#include "impact/event_log.hpp"
 #include "impact/force.hpp"
 #include "impact/run.hpp"
+#include "impact/step_events.hpp"
 
 using Catch::Contains;
 using impact::Event;
@@ -64,7 +64,7 @@ TEST_CASE("events: a time-stepper's impacts, stick and lift under a harmonic for
   model.harmonic = impact::Harmonic{2 * kG, 2 * std::numbers::pi, 0.0};
   const double h = 1e-4;
   std::vector<Event> events;
-  impact::EventLog log(model, h, [&](const Event& e) { events.push_back(e); });
+  impact::StepEvents log(model, h, [&](const Event& e) { events.push_back(e); });
   InelasticEuler stepper(model, h);
   impact::simulate(stepper, impact::State{0.0, 0.0}, impact::Grid{h, 10000}, log);
   REQUIRE(events.size() >= 4);

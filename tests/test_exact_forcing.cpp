@@ -1,5 +1,5 @@
 // The event-driven exact solution for a harmonic force f(t) = f + A sin(omega t + phase)
-// (event_track.hpp, flight_search.hpp, ExactStepper): against the closed form of exact.hpp when
+// (exact_march.hpp, flight_search.hpp, ExactStepper): against the closed form of exact.hpp when
 // A = 0, against hand-derived lift-off times, on grazing impacts that a sign check at sample times
 // misses, on chatter, and against the work-energy identity of an elastic flight.
 #include <gsl/gsl_integration.h>
@@ -12,13 +12,13 @@
 #include <vector>
 
 #include "impact/any_stepper.hpp"
-#include "impact/event_track.hpp"
 #include "impact/exact.hpp"
+#include "impact/exact_march.hpp"
 #include "impact/run.hpp"
 
+using impact::ClosedFormMarch;
 using impact::Event;
 using impact::EventKind;
-using impact::EventTrack;
 using impact::ExactSolution;
 using impact::Harmonic;
 using impact::Model;
@@ -38,7 +38,7 @@ Model harmonic_model(double f, double amplitude, double omega, double phase,
   return m;
 }
 
-std::vector<Event> events_until(EventTrack& track, double T, double h) {
+std::vector<Event> events_until(ClosedFormMarch& track, double T, double h) {
   std::vector<Event> events;
   track.set_event_sink([&](const Event& e) { events.push_back(e); });
   double impulse = 0;
@@ -55,7 +55,7 @@ TEST_CASE("exact forcing: amplitude 0 agrees with the closed form to rounding",
   constant.harmonic.reset();
   const State initial{2.0, 0.5};
   const ExactSolution closed(constant, initial);
-  EventTrack track(with_zero, initial, 0.0);
+  ClosedFormMarch track(with_zero, initial, 0.0);
   std::vector<Event> events;
   track.set_event_sink([&](const Event& e) { events.push_back(e); });
   // Up to just before the Zeno time: each impact time is a Brent root, exact to a few ulp of t
@@ -87,7 +87,7 @@ TEST_CASE("exact forcing: a grazing impact between two samples is found", "[exac
   const double t_m = kPi / 3, h = 0.01;
   for (double depth : {1e-6, 1e-10, 1e-13}) {
     const double u0 = std::sin(t_m) - t_m / 2 - depth;
-    EventTrack track(model, {u0, -0.5}, 0.0);
+    ClosedFormMarch track(model, {u0, -0.5}, 0.0);
     bool sign_check_sees_it = false;
     std::vector<Event> events;
     track.set_event_sink([&](const Event& e) { events.push_back(e); });
@@ -116,7 +116,7 @@ TEST_CASE("exact forcing: a resting particle lifts off where f crosses 0 upward"
           "[exact][forcing]") {
   // f = -1 + 2 sin t: on the floor from t = 0 (f(0) = -1), it lifts at sin t = 1/2, t = pi/6.
   const Model model = harmonic_model(-1.0, 2.0, 1.0, 0.0, 0.0);
-  EventTrack track(model, {0.0, 0.0}, 0.0);
+  ClosedFormMarch track(model, {0.0, 0.0}, 0.0);
   const std::vector<Event> events = events_until(track, 10.0, 0.01);
   REQUIRE(events.size() >= 3);
   CHECK(events[0].kind == EventKind::stick);
@@ -142,7 +142,7 @@ TEST_CASE("exact forcing: a chatter ends in sticking within the stated window",
           "[exact][forcing]") {
   SECTION("amplitude 0: the stick lies within W before the closed-form Zeno time") {
     Model model = harmonic_model(-kG, 0.0, 1.0, 0.0, 0.5);
-    EventTrack track(model, {1.0, 0.0}, 0.0);
+    ClosedFormMarch track(model, {1.0, 0.0}, 0.0);
     const std::vector<Event> events = events_until(track, 3.0, 0.001);
     Model constant = model;
     constant.harmonic.reset();
@@ -155,7 +155,7 @@ TEST_CASE("exact forcing: a chatter ends in sticking within the stated window",
   SECTION("harmonic: speeds below 1e-8 of the largest end in a stick, resting from then on") {
     // A table shaking at Gamma = 0.5 (it never lifts the particle off: f < 0 throughout).
     Model model = harmonic_model(-kG, 0.5 * kG, 2 * kPi, 0.0, 0.5);
-    EventTrack track(model, {0.2, 0.0}, 0.0);
+    ClosedFormMarch track(model, {0.2, 0.0}, 0.0);
     const std::vector<Event> events = events_until(track, 3.0, 0.001);
     REQUIRE(events.size() >= 3);
     REQUIRE(events.back().kind == EventKind::stick);
@@ -177,7 +177,7 @@ TEST_CASE("exact forcing: an elastic flight changes v^2/2 by the work of f", "[e
   // 1e-12 per flight).
   const Model model = harmonic_model(-kG, 2.0 * kG, 2 * kPi, 0.3, 1.0);
   const State initial{0.3, 1.0};
-  EventTrack track(model, initial, 0.0);
+  ClosedFormMarch track(model, initial, 0.0);
   std::vector<Event> events;
   track.set_event_sink([&](const Event& e) { events.push_back(e); });
   const double T = 12.0;
@@ -228,7 +228,7 @@ TEST_CASE("exact forcing: ExactStepper samples a harmonic force as the track doe
   int impacts = 0;
   std::get<impact::ExactStepper>(stepper).set_event_sink(
       [&](const Event& e) { impacts += e.kind == EventKind::impact; });
-  EventTrack track(model, initial, 0.0);
+  ClosedFormMarch track(model, initial, 0.0);
   double impulse = 0, total = 0;
   State last = initial;
   impact::simulate(stepper, initial, grid, [&](std::int64_t l, const State& s, const auto& info) {
@@ -256,7 +256,7 @@ TEST_CASE("exact forcing: a table's chatters decay to the cut-off, not to a roun
   // the chatter then never ends. Written from the flight's start, each chatter reaches the cut-off
   // in ~80 impacts (0.8^80 ~ 2e-8); 20 periods stay far below 10^4 impacts.
   const Model model = harmonic_model(-kG, 1.05 * kG, 20 * kPi, 0.0, 0.8);
-  EventTrack track(model, {0.0, 0.0}, 0.0);
+  ClosedFormMarch track(model, {0.0, 0.0}, 0.0);
   const std::vector<Event> events = events_until(track, 2.0, 1e-3);
   long impacts = 0, sticks = 0;
   for (const Event& e : events) {

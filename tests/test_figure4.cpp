@@ -15,9 +15,9 @@
 #include "analysis/figure4/figure4_readings.hpp"
 #include "analysis/fit.hpp"
 #include "analysis/reference.hpp"
-#include "impact/event_track.hpp"
-#include "impact/events.hpp"
+#include "impact/event.hpp"
 #include "impact/exact.hpp"
+#include "impact/exact_march.hpp"
 
 using namespace impact;
 using namespace impact::figure4;
@@ -283,7 +283,7 @@ TEST_CASE(
     "[figure4][claim]") {
   // exact with a harmonic part of amplitude 0 finds each impact by its certified search and
   // Brent's root (flight_search.hpp) instead of the closed form t_k of exact.hpp; it cuts the
-  // chatter at the first impact slower than 1e-8 of the first one (event_track.hpp) and sticks
+  // chatter at the first impact slower than 1e-8 of the first one (exact_march.hpp) and sticks
   // there, W = 2 e V / (|f| (1 - e)) before the accumulation point, W <= 2 e 1e-8 V1 / (|f| (1 -
   // e)) = 6.1e-8 s. Each impact time is a root to an ulp or two of t (8.9e-16 s below 8 s); a root
   // late by d launches the rest e |f| d faster, which moves every later impact by at most
@@ -295,7 +295,7 @@ TEST_CASE(
   CHECK(std::fabs(t_inf - 7.0026) < 5e-5);
   Model harmonic = s.model;
   harmonic.harmonic = Harmonic{0.0, 1.0, 0.0};
-  EventTrack track(harmonic, s.initial, 0.0);
+  ClosedFormMarch track(harmonic, s.initial, 0.0);
   std::vector<Event> events;
   track.set_event_sink([&](const Event& event) { events.push_back(event); });
   double impulse = 0;

@@ -12,7 +12,7 @@
 #include "analysis/lemma1/lemma1.hpp"
 #include "analysis/lemma3/bounds.hpp"
 #include "analysis/lemma3/lemma3_forcing.hpp"
-#include "impact/event_track.hpp"
+#include "impact/exact_march.hpp"
 #include "impact/force.hpp"
 
 using namespace impact;
@@ -41,13 +41,14 @@ const ForcingStats& velocity(ForceReading r) {
   return summary().velocity[index_of(r)];
 }
 
-// The exact solution (EventTrack) with its events and the smallest contact impulse of a step of h.
+// The exact solution (ClosedFormMarch) with its events and the smallest contact impulse of a step
+// of h.
 struct TrackedRun {
   std::vector<Event> events;
   double min_step_impulse = 0;
 };
 TrackedRun track(const Model& model, const State& initial, double T, double h) {
-  EventTrack exact(model, initial, 0.0);
+  ClosedFormMarch exact(model, initial, 0.0);
   TrackedRun run;
   exact.set_event_sink([&](const Event& e) { run.events.push_back(e); });
   const Grid grid = Grid::covering(T, h);

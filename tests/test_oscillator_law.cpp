@@ -1,4 +1,4 @@
-// The exact-flight reference for a linear force (oscillator_law.hpp: EventTrackOf with the
+// The exact-flight reference for a linear force (oscillator_law.hpp: ExactMarch with the
 // closed-form linear flights) against the method event_driven on the same force written as an
 // expression, on 20 random scenes, damped and not, with impacts, chatter and rests; and its
 // first stretch after a lift-off.

@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "cli_support.hpp"
-#include "impact/event_log.hpp"
 #include "impact/output.hpp"
 #include "impact/run_result.hpp"
+#include "impact/step_events.hpp"
 #include "scene/provenance.hpp"
 #include "scene/read_scene.hpp"
 #include "scene/resolved_scene.hpp"

@@ -33,7 +33,7 @@ TEST_CASE("vibrating table: direct's impacts on the period-1 orbit, one per peri
   const PeriodOneOrbit orbit = *period_one_orbit(gamma, e, 1);
   const TableRun run = run_table(scene, find_method("direct")->defaults, h, 200, 180);
   // One impact per table period (0.1 s) after the transient, none resting; each dated where the
-  // step's free flight under its mean force crosses the floor (EventLog), which is direct's own
+  // step's free flight under its mean force crosses the floor (StepEvents), which is direct's own
   // closed-form flight, so its phase is off the orbit's only by the scheme's O(h) drift of the
   // orbit (measured 0.21 omega h; bounded here by one step, omega h = 6.3e-3 rad), and its
   // take-off speed e |v^l| within e g h of it (the impulse acts at the step's end, (4-4)).

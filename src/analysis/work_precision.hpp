@@ -15,10 +15,10 @@
 
 #include "analysis/fit.hpp"
 #include "impact/error_norms.hpp"
-#include "impact/event_log.hpp"
 #include "impact/model.hpp"
 #include "impact/run.hpp"
 #include "impact/scene.hpp"
+#include "impact/step_events.hpp"
 
 namespace impact {
 

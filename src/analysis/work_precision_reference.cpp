@@ -4,9 +4,9 @@
 #include <string>
 
 #include "impact/any_stepper.hpp"
-#include "impact/event_log.hpp"
-#include "impact/events.hpp"
+#include "impact/event.hpp"
 #include "impact/run.hpp"
+#include "impact/step_events.hpp"
 
 namespace impact {
 

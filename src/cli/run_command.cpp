@@ -9,9 +9,9 @@
 
 #include "cli/progress.hpp"
 #include "impact/capabilities.hpp"
-#include "impact/event_log.hpp"
 #include "impact/output.hpp"
 #include "impact/run_scene.hpp"
+#include "impact/step_events.hpp"
 #include "scene/provenance.hpp"
 #include "scene/read_scene.hpp"
 

@@ -4,8 +4,8 @@
 #include <string>
 #include <variant>
 
-#include "impact/event_log.hpp"
 #include "impact/force.hpp"
+#include "impact/step_events.hpp"
 
 namespace impact {
 

@@ -9,8 +9,8 @@
 #include "impact/capabilities.hpp"
 #include "impact/direct.hpp"
 #include "impact/direct_located.hpp"
+#include "impact/event.hpp"
 #include "impact/event_driven.hpp"
-#include "impact/events.hpp"
 #include "impact/exact.hpp"
 #include "impact/exact_bonded.hpp"
 #include "impact/fb_newton.hpp"
@@ -56,7 +56,7 @@ RunSummary simulate(AnyStepper& stepper, const State& initial, const Grid& grid,
   return std::visit([&](auto& s) { return simulate(s, initial, grid, observe); }, stepper);
 }
 
-// attach_event_sink (event_log.hpp) for the stepper the variant holds.
+// attach_event_sink (step_events.hpp) for the stepper the variant holds.
 bool attach_event_sink(AnyStepper& stepper, const EventSink& sink);
 
 }  // namespace impact

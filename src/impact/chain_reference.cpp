@@ -7,7 +7,7 @@
 #include <string>
 
 #include "impact/chain_rest.hpp"
-#include "impact/event_track.hpp"
+#include "impact/exact_march.hpp"
 #include "impact/flight_search.hpp"
 #include "impact/run.hpp"
 

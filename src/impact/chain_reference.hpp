@@ -19,7 +19,7 @@
 //
 // Accumulation (0 < e < 1). Impacts accumulate as the particle's do, t_inf = t_k + 2 e V_k /
 // (p (1 - e)) for a constant push per unit mass p = -(g + (k / m1) d). The reference cuts the
-// sequence off as the particle's exact track does (event_track.hpp): at an impact whose speed V is
+// sequence off as the particle's exact track does (exact_march.hpp): at an impact whose speed V is
 // below kChatterCutoff (1e-8) times the largest impact speed seen, when chain_chatter_window()
 // certifies that all further impacts lie within a window W after it and the lower mass rests
 // after them, that impact is made plastic and the rest starts there. The reference then differs

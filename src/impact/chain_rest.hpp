@@ -55,7 +55,7 @@ double chain_departure(const Chain& chain, const ChainState& s);
 // An accumulation of impacts (e < 1). For an impact of speed V whose state just after it (the
 // lower mass launched at e V) is `after`: the window W within which all further impacts of the
 // exact solution lie, the lower mass resting after them, if that can be certified; nullopt
-// otherwise. The argument is the particle's (event_track.hpp) with the push per unit mass
+// otherwise. The argument is the particle's (exact_march.hpp) with the push per unit mass
 // p = -(g + (k / m1) d) in place of -f: over the trial window W0 = 4 e V / (p (1 - e)) (from p at
 // the impact), |p'| = (k / m1) |d'| <= (k / m1) (w A + J), since each later impact changes the
 // amplitude A of d by its velocity jump over w, and those jumps sum to at most

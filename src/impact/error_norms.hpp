@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "impact/contact.hpp"
-#include "impact/event_track.hpp"
 #include "impact/exact.hpp"
+#include "impact/exact_march.hpp"
 #include "impact/format.hpp"
 #include "impact/linear_law.hpp"
 #include "impact/model.hpp"
@@ -37,7 +37,7 @@ struct ErrorNorms {
 };
 
 // The exact solution at the grid times, in increasing order, for any force: ExactSolution's closed
-// form for a constant one, EventTrack for a harmonic one, LinearTrack for a linear one and the
+// form for a constant one, ClosedFormMarch for a harmonic one, LinearTrack for a linear one and the
 // method event_driven's ODE track (default tolerances, f evaluated up to `end` only);
 // impact_time(1) of a time-dependent force is known once the samples have passed it. The closed
 // form is sampled flight by flight (the flight that held the last sample is kept while the samples
@@ -101,9 +101,9 @@ class ReferenceSolution {
   std::optional<ExactSolution> closed_form_;
   ExactSolution::Flight flight_;
   double rest_ = 0;
-  std::optional<EventTrack> track_;
+  std::optional<ClosedFormMarch> track_;
   std::optional<LinearTrack> linear_;  // a linear force of the state (linear_law.hpp)
-  std::optional<EventTrackOf<OdeLaw>> ode_track_;
+  std::optional<ExactMarch<OdeLaw>> ode_track_;
   double impact_energy_ = 0;
 };
 

@@ -1,5 +1,5 @@
 // The method event_driven: the exact solution of (2-1)-(2-4) for any body force f(t), a muparser
-// expression above all, followed event by event (EventTrackOf, event_track.hpp) with its free
+// expression above all, followed event by event (ExactMarch, exact_march.hpp) with its free
 // flights integrated by GSL odeiv2 rk8pd (OdeLaw, ode_flight.hpp: tolerances, dense output, the
 // force bound per ODE step and what it does and does not guarantee), sampled on t = l h. It is the
 // reference for an expression force, as exact is for a constant or harmonic one.
@@ -10,8 +10,8 @@
 #include <optional>
 #include <string>
 
-#include "impact/event_track.hpp"
-#include "impact/events.hpp"
+#include "impact/event.hpp"
+#include "impact/exact_march.hpp"
 #include "impact/method_params.hpp"
 #include "impact/model.hpp"
 #include "impact/ode_flight.hpp"
@@ -48,7 +48,7 @@ class EventDriven {
   EventDrivenParams params_;
   OdeSettings settings_;
   std::int64_t l0_ = 0, event_limit_ = 0;
-  std::optional<EventTrackOf<OdeLaw>> track_;
+  std::optional<ExactMarch<OdeLaw>> track_;
   EventSink sink_;
 };
 

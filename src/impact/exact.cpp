@@ -96,7 +96,7 @@ ExactSolution::ExactSolution(const Model& model, const State& initial)
   if (!model.expression.empty() || (model.harmonic && model.harmonic->amplitude != 0.0))
     throw std::invalid_argument(
         "ExactSolution: the closed form is for a constant force; a harmonic one is followed by "
-        "EventTrack (method exact), an expression by method event_driven");
+        "ClosedFormMarch (method exact), an expression by method event_driven");
 
   const double d = initial.u - model.phi, v0 = initial.v, f = model.f;
   // The first impact s: the root of d + v0 s + f s^2 / 2 = 0 that is reached first, in the form

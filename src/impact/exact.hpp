@@ -23,8 +23,8 @@
 //    INT64_MAX / 2, a cap larger than any count reached before t_inf.
 //  - The constructor throws std::invalid_argument for non-finite data, u0 < phi, COR outside
 //    [0, 1] or a force that is not constant (a harmonic part with a non-zero amplitude, an
-//    expression): ExactStepper follows a harmonic force with EventTrack (event_track.hpp). A time
-//    that overflows (e.g. a Zeno time beyond DBL_MAX for a vanishing f) is treated as never
+//    expression): ExactStepper follows a harmonic force with ClosedFormMarch (exact_march.hpp). A
+//    time that overflows (e.g. a Zeno time beyond DBL_MAX for a vanishing f) is treated as never
 //    reached.
 #pragma once
 
@@ -33,7 +33,7 @@
 #include <optional>
 #include <string>
 
-#include "impact/event_track.hpp"
+#include "impact/exact_march.hpp"
 #include "impact/linear_law.hpp"
 #include "impact/method_params.hpp"
 #include "impact/model.hpp"
@@ -82,7 +82,7 @@ class ExactSolution {
 
 // The exact solution as a stepper: sampled at the grid times after the state it was initialized
 // with, so that it runs wherever a time-stepper does. A constant force uses ExactSolution in closed
-// form (time measured from the initial grid time); a harmonic one the event-driven EventTrack
+// form (time measured from the initial grid time); a harmonic one the event-driven ClosedFormMarch
 // (absolute time t = l h, which the force depends on); a linear force of the state (Model::linear)
 // the event-driven LinearTrack (linear_law.hpp), its flights in closed form. An expression force is
 // refused: its reference is the method event_driven.
@@ -99,7 +99,8 @@ class ExactStepper {
 
   ExactStepper(const Model& model, double h, const ExactParams&);
 
-  // The solution from (t_l, s); throws std::invalid_argument where ExactSolution and EventTrack do.
+  // The solution from (t_l, s); throws std::invalid_argument where ExactSolution and
+  // ClosedFormMarch do.
   void initialize(const State& s, std::int64_t l);
 
   // Samples the solution at t_{l+1}; N^l = impulse in (t_l, t_{l+1}] / h.
@@ -141,7 +142,7 @@ class ExactStepper {
   std::optional<ExactSolution> solution_;
   ExactSolution::Flight flight_;
   double rest_begin_ = std::numeric_limits<double>::infinity(), rest_force_ = 0;
-  std::optional<EventTrack> track_;
+  std::optional<ClosedFormMarch> track_;
   std::optional<LinearTrack> linear_;
   EventSink sink_;
   std::int64_t l0_ = 0;

@@ -15,7 +15,7 @@
 #include <optional>
 #include <string>
 
-#include "impact/events.hpp"
+#include "impact/event.hpp"
 #include "impact/exact.hpp"
 #include "impact/model.hpp"
 

@@ -85,7 +85,7 @@ struct ForceBounds {
 // |v| + |f| late (a bias of one sign at every impact, which made an elastic bounce gain energy at
 // each impact and the error grow as T^2). v is the velocity at the root itself, one Newton step
 // back from t: v(t) - f(t) late with late = g(t) / v(t), exact to O(f' late^2); the flight after
-// the impact then starts at t from the state it reached `late` after the root (EventTrackOf).
+// the impact then starts at t from the state it reached `late` after the root (ExactMarch).
 struct Contact {
   double t = 0;     // the first double with g <= 0 at or past the contact
   double v = 0;     // the velocity at the contact, <= 0
@@ -181,14 +181,14 @@ double force_at(const Model& model, double t);
 double force_rate(const Model& model, double t);
 
 // The chatter window W = 2 e V / (g_min (1 - rho)), rho = e sqrt(g_max / g_min), of
-// event_track.hpp for an impact of speed V, given the range [g_min, g_max] of -f over the trial
+// exact_march.hpp for an impact of speed V, given the range [g_min, g_max] of -f over the trial
 // window W0 = 4 e V / (g (1 - e)) (chatter_trial_window): nullopt unless g_min > 0, rho < 1 and
 // W <= W0, so that the window the bound speaks of lies inside the one the range was taken over.
 double chatter_trial_window(double e, double V, double g);
 std::optional<double> chatter_window_within(double e, double V, double W0, double g_min,
                                             double g_max);
 
-// The flights of a constant or harmonic force for EventTrack (event_track.hpp): closed form,
+// The flights of a constant or harmonic force for ClosedFormMarch (exact_march.hpp): closed form,
 // searched with the global bounds above; the chatter window is certified with C = |A| omega.
 class ClosedFormLaw {
  public:
@@ -213,7 +213,7 @@ class ClosedFormLaw {
   Lift lift_after(double t) const { return {impact::lift_time(model_, t), true}; }
   // -(integral of f over [a, b]): the impulse N = -f delivers while the particle rests (2-1).
   double rest_impulse(double a, double b) const;
-  // The window W of event_track.hpp for an impact of speed V at t, if certified.
+  // The window W of exact_march.hpp for an impact of speed V at t, if certified.
   std::optional<double> chatter_window(double t, double V, double e) const;
 
   const HarmonicFlight& flight() const { return flight_; }

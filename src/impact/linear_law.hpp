@@ -1,6 +1,6 @@
 // The exact solution for a linear force of the state plus a harmonic term,
 //   f(t, u, v) = f - k (u - u_eq) - c v + a sin(omega t + phase)   (Model::linear),
-// advanced forward in time: the event logic of event_track.hpp (Newton's law, chatter cut off under
+// advanced forward in time: the event logic of exact_march.hpp (Newton's law, chatter cut off under
 // a certified window, rest while the floor holds the particle, lift-off) with the closed-form
 // flights of linear_flight.hpp and their certified contact search, impact times refined by Brent
 // to a few ulps. The method exact follows such a force with it; the other methods take the force
@@ -10,7 +10,7 @@
 // On the floor the state is (phi, 0), so the force there is a constant plus the harmonic term,
 // f_rest(t) = f - k (phi - u_eq) + a sin(omega t + phase): lift-off, the impulse of a rest and
 // the sticking test are those of the harmonic force (flight_search.hpp) with f_rest. A chatter is
-// cut off under the window of event_track.hpp with the push's range over the bounce box
+// cut off under the window of exact_march.hpp with the push's range over the bounce box
 // u in [phi, phi + V^2/(2 g_min)], |v| <= V: g_min = -f_rest - |a| omega W0 - |c| V - |k| h_max,
 // g_max = -f_rest + |a| omega W0 + |c| V + |k| h_max.
 #pragma once
@@ -18,7 +18,7 @@
 #include <optional>
 #include <string>
 
-#include "impact/event_track.hpp"
+#include "impact/exact_march.hpp"
 #include "impact/flight_search.hpp"
 #include "impact/linear_flight.hpp"
 #include "impact/model.hpp"
@@ -28,7 +28,7 @@ namespace impact {
 // The LinearForce of linear_flight.hpp that a model with a linear part states.
 LinearForce linear_force(const Model& model);
 
-// The Law of EventTrackOf for a linear force (event_track.hpp names the interface).
+// The Law of ExactMarch for a linear force (exact_march.hpp names the interface).
 class LinearLaw {
  public:
   LinearLaw(const LinearForce& force, double phi);
@@ -63,10 +63,10 @@ class LinearLaw {
   double certified_ = 0, checked_ = 0;
 };
 
-using LinearTrack = EventTrackOf<LinearLaw>;
+using LinearTrack = ExactMarch<LinearLaw>;
 
 // The exact solution of a model with a linear part from (t0, initial). Throws
-// std::invalid_argument where EventTrackOf does, for non-finite force data, a harmonic part
+// std::invalid_argument where ExactMarch does, for non-finite force data, a harmonic part
 // without omega > 0, an expression beside the linear part or internal variables.
 LinearTrack linear_track(const Model& model, const State& initial, double t0);
 

@@ -54,8 +54,8 @@ struct PenaltyParams {
 std::span<const std::string_view> penalty_stepper_names();
 
 struct ExactParams {
-  // The events a run with a harmonic force may pass (EventTrack), then a numerical failure that
-  // says so; 0: automatic, 1e6 plus 1000 per grid step done (run_budget(), event_track.hpp). A
+  // The events a run with a harmonic force may pass (ClosedFormMarch), then a numerical failure
+  // that says so; 0: automatic, 1e6 plus 1000 per grid step done (run_budget(), exact_march.hpp). A
   // constant force costs O(1) per sample whatever its number of impacts: no bound.
   std::int64_t max_events = 0;
   bool operator==(const ExactParams&) const = default;

@@ -12,7 +12,7 @@
 #include <sstream>
 #include <utility>
 
-#include "impact/event_track.hpp"
+#include "impact/exact_march.hpp"
 #include "impact/gsl_errors.hpp"
 #include "impact/rk8pd.hpp"
 

@@ -1,7 +1,7 @@
 // The flights of any body force f(t) (an expression above all) for the event-driven method
 // event_driven: the free flight u'' = f(t), as y = (u - phi, v), y' = (v, f(t)), integrated by
 // GSL odeiv2 rk8pd with tight tolerances, the impacts found by the certified search of
-// flight_search.hpp inside each accepted ODE step, and the events of EventTrackOf.
+// flight_search.hpp inside each accepted ODE step, and the events of ExactMarch.
 //
 // Dense output: the state at a time t inside an accepted step [t_a, t_b] is one rk8pd step of
 // length t - t_a from (t_a, y_a), no longer than the step the error control accepted, so it is as
@@ -27,7 +27,7 @@
 // that fits between them unseen is not guaranteed to be found. A particle that leaves the floor
 // with zero speed flies while g'' = f > 0: the first stretch is certified up to the last sample
 // with f > 0, or, when f turns down before the first sample (f = 1e-300 - t), up to the zero of f
-// (Brent). The chatter window of event_track.hpp uses g_min and g_max from f sampled over the
+// (Brent). The chatter window of exact_march.hpp uses g_min and g_max from f sampled over the
 // window, widened by the largest change between neighbouring samples (estimated, not certified,
 // with no bound on f').
 //

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "impact/event_track.hpp"
+#include "impact/exact_march.hpp"
 #include "impact/ode_flight.hpp"
 #include "impact/step_quadrature.hpp"
 

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "impact/error_norms.hpp"
-#include "impact/events.hpp"
+#include "impact/event.hpp"
 #include "impact/model.hpp"
 #include "impact/row_stream.hpp"
 #include "impact/run.hpp"

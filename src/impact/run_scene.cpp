@@ -6,8 +6,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "impact/event_log.hpp"
 #include "impact/output.hpp"
+#include "impact/step_events.hpp"
 #include "impact/work_energy.hpp"
 
 namespace impact {
@@ -52,7 +52,7 @@ RunReport run_scene(const Scene& scene, AnyStepper& stepper, const RunOutputs& o
   // A method that knows its events dates the rest by them (its final stick), not on the grid.
   std::optional<double> rest_from_events;
   const bool rest_by_events = outputs.summary && own_events;
-  std::optional<EventLog> log;
+  std::optional<StepEvents> log;
   if (outputs.events || (work && work->follows_motion()) || rest_by_events) {
     const EventSink sink = [&](const Event& e) {
       if (work) work->event(e);

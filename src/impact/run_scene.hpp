@@ -10,7 +10,7 @@
 
 #include "impact/any_stepper.hpp"
 #include "impact/error_norms.hpp"
-#include "impact/events.hpp"
+#include "impact/event.hpp"
 #include "impact/row_stream.hpp"
 #include "impact/run.hpp"
 #include "impact/scene.hpp"

@@ -16,7 +16,7 @@
 #include <cstdint>
 #include <string>
 
-#include "impact/events.hpp"
+#include "impact/event.hpp"
 #include "impact/model.hpp"
 
 namespace impact {
@@ -48,7 +48,7 @@ template <class S>
 concept ParticleStepper = Stepper<S> && std::same_as<StateOf<S>, State>;
 
 // A stepper that knows its events exactly and reports them (exact, event_driven); the others' are
-// read off their steps (event_log.hpp).
+// read off their steps (step_events.hpp).
 template <class S>
 concept EventSource = Stepper<S> && requires(S& stepper, const EventSink& sink) {
   stepper.set_event_sink(sink);

@@ -10,7 +10,7 @@
 #include <array>
 #include <cstdint>
 
-#include "impact/events.hpp"
+#include "impact/event.hpp"
 #include "impact/force.hpp"
 #include "impact/model.hpp"
 

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "analysis/impact_oscillator/oscillator_theory.hpp"
-#include "impact/events.hpp"
+#include "impact/event.hpp"
 
 namespace impact::impact_oscillator {
 

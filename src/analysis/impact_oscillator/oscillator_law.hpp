@@ -1,5 +1,5 @@
 // The impact oscillator's exact-flight reference: the core's exact solution for a linear force
-// (linear_law.hpp: the event logic of EventTrackOf with the closed-form flights of
+// (linear_law.hpp: the event logic of ExactMarch with the closed-form flights of
 // linear_flight.hpp and their certified contact search), started on the oscillator, and the impact
 // map between two impacts. The package's own methods take this force as an expression f(t, u, v)
 // (event_driven integrates it with rk8pd); this reference is what they are checked against.
@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "analysis/impact_oscillator/oscillator_theory.hpp"
-#include "impact/events.hpp"
+#include "impact/event.hpp"
 #include "impact/flight_search.hpp"
 #include "impact/linear_flight.hpp"
 #include "impact/linear_law.hpp"

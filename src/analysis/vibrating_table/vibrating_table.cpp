@@ -26,7 +26,7 @@ bool is_reference(std::string_view method) {
 
 // What "repeats" means for a method's impacts (classify_table_run): to 1e-6 for exact; for a
 // time-stepper to 1.5 omega h: its contact lands on the grid, so an orbit of the continuous system
-// can alternate between two neighbouring contact steps; the impact's date (EventLog's crossing of
+// can alternate between two neighbouring contact steps; the impact's date (StepEvents's crossing of
 // the floor inside the step) follows the flight, but the take-off speed e |v^l| jumps with the
 // step that applies the impulse (4-4), by about e g h, i.e. e omega h in units of g / omega, and
 // the scheme's flight from a take-off a step later moves the next crossing by up to omega h.

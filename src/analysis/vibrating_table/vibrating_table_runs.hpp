@@ -1,9 +1,9 @@
 // The ball on a vibrating table y = a sin(omega t + phase) as a scene of the package (the model of
 // vibrating_table_theory.hpp in SI units: f(t) = -g + Gamma g sin(omega t + phase), phi = 0,
 // COR = e) and what one run of any method says about it: its impacts and its rests on the table.
-// The events are those `impact run --events` reports (event_log.hpp): the methods that know them
+// The events are those `impact run --events` reports (step_events.hpp): the methods that know them
 // exactly (exact) report them through set_event_sink; a time-stepper's are read off its steps by
-// EventLog (an impact dated where the step's flight under its mean force crosses the floor, a
+// StepEvents (an impact dated where the step's flight under its mean force crosses the floor, a
 // rest from two contact steps in a row ending at rest).
 #pragma once
 
@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "impact/capabilities.hpp"
-#include "impact/events.hpp"
+#include "impact/event.hpp"
 #include "impact/model.hpp"
 
 namespace impact::vibrating_table {

@@ -1,4 +1,4 @@
-// The events of a run (events.hpp) for `impact run --events FILE`. A stepper that knows its events
+// The events of a run (event.hpp) for `impact run --events FILE`. A stepper that knows its events
 // exactly reports them itself through `void set_event_sink(EventSink)`; for a time-stepper they are
 // read off its steps, in O(1) memory, by these rules:
 //  - a contact step is one by the rule of contact.hpp (N^l > u^{l+1} - phi: the force branch of
@@ -22,7 +22,7 @@
 #include <cstdint>
 #include <cstdio>
 
-#include "impact/events.hpp"
+#include "impact/event.hpp"
 #include "impact/force.hpp"
 #include "impact/model.hpp"
 #include "impact/stepper.hpp"
@@ -30,7 +30,7 @@
 namespace impact {
 
 // Gives `stepper` the sink if it knows its events exactly (has set_event_sink); returns whether it
-// did, else the events are to be read off its steps with an EventLog.
+// did, else the events are to be read off its steps with an StepEvents.
 template <Stepper S>
 bool attach_event_sink(S& stepper, const EventSink& sink) {
   if constexpr (EventSource<S>) {
@@ -42,9 +42,9 @@ bool attach_event_sink(S& stepper, const EventSink& sink) {
 }
 
 // The events of a time-stepper's run by the rules above, as an observer of simulate().
-class EventLog {
+class StepEvents {
  public:
-  EventLog(const Model& model, double h, EventSink sink);
+  StepEvents(const Model& model, double h, EventSink sink);
 
   // The state at t_l and the StepInfo of the step that ended there (l = 0: the initial state).
   void operator()(std::int64_t l, const State& s, const StepInfo& info);

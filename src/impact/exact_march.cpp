@@ -1,5 +1,5 @@
-// The exact solution for a constant or harmonic force; conventions in event_track.hpp.
-#include "impact/event_track.hpp"
+// The exact solution for a constant or harmonic force; conventions in exact_march.hpp.
+#include "impact/exact_march.hpp"
 
 #include <cmath>
 #include <sstream>
@@ -9,7 +9,7 @@ namespace impact {
 
 namespace {
 
-// The checks that only a harmonic force needs, before the generic ones of EventTrackOf.
+// The checks that only a harmonic force needs, before the generic ones of ExactMarch.
 const Model& closed_form_model(const Model& model) {
   if (!model.expression.empty())
     throw std::invalid_argument(
@@ -60,7 +60,7 @@ std::string describe_stop(const TrackStop& stop, std::string_view law_failure,
   return msg.str();
 }
 
-EventTrack::EventTrack(const Model& model, const State& initial, double t0)
-    : EventTrackOf<ClosedFormLaw>(ClosedFormLaw(closed_form_model(model)), model, initial, t0) {}
+ClosedFormMarch::ClosedFormMarch(const Model& model, const State& initial, double t0)
+    : ExactMarch<ClosedFormLaw>(ClosedFormLaw(closed_form_model(model)), model, initial, t0) {}
 
 }  // namespace impact

@@ -1,4 +1,4 @@
-// The event track behind exact (a harmonic force) and event_driven (any f(t)), event_track.hpp:
+// The event track behind exact (a harmonic force) and event_driven (any f(t)), exact_march.hpp:
 // an elastic impact keeps its speed to rounding however late it happens, so long runs do not
 // drift; a run's work is bounded (method.max_events, max_ode_steps) and a track that stops says
 // why.
@@ -60,7 +60,7 @@ Model tracked_constant(double f, bool expression) {
 }  // namespace
 
 TEST_CASE("event track: an elastic impact keeps its speed to rounding, late or early",
-          "[event_track][regression]") {
+          "[exact_march][regression]") {
   // u0 = 1 under f = -1e8: V = 14142 m/s, a flight of 2.8e-4 s, 7071 impacts in 2 s. The track
   // took each contact at the first double past the root, up to ulp(t) late, with the speed
   // |v| + |f| ulp(t): every impact gained (7070 of 7070), the last by 3.7e-9 relative. Rounding
@@ -87,7 +87,7 @@ TEST_CASE("event track: an elastic impact keeps its speed to rounding, late or e
 }
 
 TEST_CASE("event track: a long elastic run matches the constant force's closed form",
-          "[event_track][regression]") {
+          "[exact_march][regression]") {
   // The scene of the report: u0 = 1, f = -9.80665, T = 1e5 s, h = 0.5, 89283 impacts. exact gave
   // u_T = 0.7937, v_T = -2.011 against the closed form's 0.7217, -2.336 (an O(T^2) drift). Each
   // located impact now carries the rounding of its own flight (a few ulp of 0.9 s), not of t:
@@ -135,7 +135,7 @@ std::string failure(const impact::Scene& scene) {
 }  // namespace
 
 TEST_CASE("event track: a run that passes more events than method.max_events stops saying so",
-          "[event_track][regression]") {
+          "[exact_march][regression]") {
   // At omega = 1e9 the table throws the particle up and catches it every 6e-9 s once it has
   // landed (t = 0.045): 2.7e7 events by t = 0.16, 7.4 GB of --events by T = 0.25, and T = 2 ran
   // for about 30 min. With the automatic budget (1e6 + 1000 per grid step) it stops at t = 0.138.
@@ -169,7 +169,7 @@ TEST_CASE("event track: a run that passes more events than method.max_events sto
 }
 
 TEST_CASE("event track: a contact search that stalls says where it stalled",
-          "[event_track][regression]") {
+          "[exact_march][regression]") {
   // amplitude = 1e300: each certified step near the floor is at most sqrt(2 gap / 1e300) s. It used
   // to read "the solve did not converge after 0 iterations".
   for (const char* method : {"exact", "event_driven"}) {

@@ -1,4 +1,4 @@
-#include "impact/event_log.hpp"
+#include "impact/step_events.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,17 +11,17 @@
 
 namespace impact {
 
-EventLog::EventLog(const Model& model, double h, EventSink sink)
+StepEvents::StepEvents(const Model& model, double h, EventSink sink)
     : force_(model), h_(h), sink_(std::move(sink)) {}
 
-void EventLog::operator()(std::int64_t l, const StateWithInternal& s, const StepInfo& info) {
+void StepEvents::operator()(std::int64_t l, const StateWithInternal& s, const StepInfo& info) {
   z_after_ = s.z;
   force_.set_internal(z_before_);  // a force of the state reads z at the step's start
   (*this)(l, static_cast<const State&>(s), info);
   z_before_ = s.z;
 }
 
-void EventLog::emit(Event event) const {
+void StepEvents::emit(Event event) const {
   const std::size_t n = force_.model().internal.size();
   if (n > 0) {
     const double start = static_cast<double>(l_ - 1) * h_;
@@ -32,7 +32,7 @@ void EventLog::emit(Event event) const {
   sink_(event);
 }
 
-void EventLog::operator()(std::int64_t l, const State& s, const StepInfo& info) {
+void StepEvents::operator()(std::int64_t l, const State& s, const StepInfo& info) {
   l_ = l;
   if (l > 0) {
     constexpr double kEps = std::numeric_limits<double>::epsilon();
@@ -51,7 +51,7 @@ void EventLog::operator()(std::int64_t l, const State& s, const StepInfo& info) 
 }
 
 // Step l, from before_ at t_l to `after` at t_{l+1}, is a contact step.
-void EventLog::contact_step(std::int64_t l, const State& after, double mean_force) {
+void StepEvents::contact_step(std::int64_t l, const State& after, double mean_force) {
   const double t = static_cast<double>(l) * h_, rest = h_ * std::fabs(mean_force);
   if (phase_ == Phase::pending_stick) {
     if (std::fabs(after.v) <= rest) {
@@ -75,7 +75,7 @@ void EventLog::contact_step(std::int64_t l, const State& after, double mean_forc
 // The first root s in [0, h] of d + v s + fbar s^2 / 2 = 0, d = u^l - phi: 2 d / (V - v) with
 // V = sqrt(v^2 - 2 fbar d) (no cancellation); 0 for a particle at or below the floor, h where the
 // flight under fbar does not reach the floor within the step (the scheme's contact came first).
-double EventLog::floor_time(double mean_force) const {
+double StepEvents::floor_time(double mean_force) const {
   const double d = before_.u - force_.model().phi, v = before_.v;
   if (d <= 0) return 0.0;
   const double discriminant = v * v - 2 * mean_force * d;

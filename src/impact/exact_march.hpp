@@ -25,7 +25,7 @@
 // Events go to the sink in increasing t as the track passes them.
 //
 // The same event logic follows an expression force with OdeLaw (ode_flight.hpp, the method
-// event_driven): EventTrackOf<Law> takes the flights, the lift-off times, the resting impulse and
+// event_driven): ExactMarch<Law> takes the flights, the lift-off times, the resting impulse and
 // the chatter window from its Law and keeps the impacts, sticks and lifts itself.
 #pragma once
 
@@ -39,7 +39,7 @@
 #include <utility>
 
 #include "impact/contact_law.hpp"
-#include "impact/events.hpp"
+#include "impact/event.hpp"
 #include "impact/flight_search.hpp"
 #include "impact/model.hpp"
 
@@ -77,11 +77,11 @@ std::string describe_stop(const TrackStop& stop, std::string_view law_failure,
                           std::int64_t max_events, std::int64_t budget);
 
 template <class Law>
-class EventTrackOf {
+class ExactMarch {
  public:
   // From (t0, initial). Throws std::invalid_argument for non-finite data, u0 < phi or a COR outside
   // [0, 1].
-  EventTrackOf(Law law, const Model& model, const State& initial, double t0);
+  ExactMarch(Law law, const Model& model, const State& initial, double t0);
 
   void set_event_sink(EventSink sink) { sink_ = std::move(sink); }
 
@@ -142,13 +142,13 @@ class EventTrackOf {
 
 // The exact solution for a constant or harmonic force. Throws std::invalid_argument for an
 // expression force (its reference is the method event_driven).
-class EventTrack : public EventTrackOf<ClosedFormLaw> {
+class ClosedFormMarch : public ExactMarch<ClosedFormLaw> {
  public:
-  EventTrack(const Model& model, const State& initial, double t0);
+  ClosedFormMarch(const Model& model, const State& initial, double t0);
 };
 
 template <class Law>
-EventTrackOf<Law>::EventTrackOf(Law law, const Model& model, const State& initial, double t0)
+ExactMarch<Law>::ExactMarch(Law law, const Model& model, const State& initial, double t0)
     : law_(std::move(law)),
       phi_(model.phi),
       e_(newton_e(contact_law(model, kElasticReading))),
@@ -162,7 +162,7 @@ EventTrackOf<Law>::EventTrackOf(Law law, const Model& model, const State& initia
 }
 
 template <class Law>
-void EventTrackOf<Law>::emit(double t, EventKind kind, double v_before, double v_after) {
+void ExactMarch<Law>::emit(double t, EventKind kind, double v_before, double v_after) {
   if (events_++ == 0) first_event_ = t;
   if (!sink_) return;
   Event event{t, kind, v_before, v_after};
@@ -173,14 +173,14 @@ void EventTrackOf<Law>::emit(double t, EventKind kind, double v_before, double v
 }
 
 template <class Law>
-void EventTrackOf<Law>::stopped(TrackStop::Reason reason) {
+void ExactMarch<Law>::stopped(TrackStop::Reason reason) {
   converged_ = false;
   if (stop_.reason == TrackStop::Reason::none)
     stop_ = {reason, t_now_, law_.certified(), law_.force_bound(), events_, first_event_};
 }
 
 template <class Law>
-void EventTrackOf<Law>::start_flight(double t, double v, bool at_crossing) {
+void ExactMarch<Law>::start_flight(double t, double v, bool at_crossing) {
   resting_ = false;
   contact_.reset();
   law_.start(t, 0.0, v, at_crossing);
@@ -189,7 +189,7 @@ void EventTrackOf<Law>::start_flight(double t, double v, bool at_crossing) {
 // A launch with speed w > 0 from a contact `late` before t (Contact): the flight starts at t from
 // the state it has reached there, so that the impact times do not fall behind by `late` each.
 template <class Law>
-void EventTrackOf<Law>::launch(double t, double w, double late) {
+void ExactMarch<Law>::launch(double t, double w, double late) {
   resting_ = false;
   contact_.reset();
   if (late == 0.0) {
@@ -204,7 +204,7 @@ void EventTrackOf<Law>::launch(double t, double w, double late) {
 // zero and falling holds it too, one that is positive lifts it at once, and so does one whose
 // upward zero crossing is t itself to rounding (lift_time(t) == t).
 template <class Law>
-void EventTrackOf<Law>::settle(double t) {
+void ExactMarch<Law>::settle(double t) {
   const double f = law_.force(t);
   if (f > 0.0 || (f == 0.0 && law_.rate(t) > 0.0)) {
     start_flight(t, 0.0, f == 0.0);  // f = 0 rising: t is where f crosses 0 upward
@@ -223,7 +223,7 @@ void EventTrackOf<Law>::settle(double t) {
 }
 
 template <class Law>
-void EventTrackOf<Law>::impact(const Contact& c, double& impulse) {
+void ExactMarch<Law>::impact(const Contact& c, double& impulse) {
   contact_.reset();
   const double V = -c.v;
   if (V > 0.0) {
@@ -247,7 +247,7 @@ void EventTrackOf<Law>::impact(const Contact& c, double& impulse) {
 }
 
 template <class Law>
-State EventTrackOf<Law>::advance(double t, double& impulse) {
+State ExactMarch<Law>::advance(double t, double& impulse) {
   // Certified search steps allowed per call: a flight takes tens (each step covers a fixed fraction
   // of the distance to the floor or more), so this is only reached by a search that stalls.
   long budget = 1'000'000;
