@@ -8,6 +8,7 @@
 
 #include "analysis/quadrature.hpp"
 #include "impact/any_stepper.hpp"
+#include "impact/contact_law.hpp"
 #include "impact/output.hpp"
 #include "impact/run.hpp"
 
@@ -148,7 +149,7 @@ double laplace_jump_signature(std::span<const Jump> jumps, double s) {
 std::vector<Jump> exact_energy_jumps(const Model& model, const ExactSolution& exact, double horizon,
                                      std::int64_t max_impacts) {
   // Newton's law v+ = -e v- at impact k turns V_k^2 / 2 - f phi into e^2 V_k^2 / 2 - f phi.
-  const double e = model.cor.value_or(1.0);
+  const double e = newton_e(contact_law(model, kElasticReading));
   std::vector<Jump> jumps;
   if (e == 1.0) return jumps;
   for (std::int64_t k = 1; k <= max_impacts; ++k) {

@@ -15,29 +15,32 @@ AnyStepper make_stepper(const Model& given, double h, const MethodParams& params
   // is, an expression (force.hpp).
   const Model model =
       std::holds_alternative<ExactParams>(params) ? given : linear_as_expression(given);
+  // The law the method applies, read from the model once (capabilities.hpp) and given to the
+  // time-steppers; exact and event_driven read Newton's law themselves, as their references do.
+  const ContactLaw law = contact_law(model, params);
   return std::visit(
       [&](const auto& p) -> AnyStepper {
         using Params = std::decay_t<decltype(p)>;
         if constexpr (std::is_same_v<Params, DirectParams>) {
-          if (p.free_flight == FreeFlightForm::paper) return DirectAsPrinted(model, h, p);
-          if (!model.internal.empty()) return DirectInternal(model, h, p);
+          if (p.free_flight == FreeFlightForm::paper) return DirectAsPrinted(model, law, h, p);
+          if (!model.internal.empty()) return DirectInternal(model, law, h, p);
           switch (force_kind(model)) {
             case ForceKind::constant:
-              return Direct(model, h, p);
+              return Direct(model, law, h, p);
             case ForceKind::harmonic:
-              return DirectHarmonic(model, h, p);
+              return DirectHarmonic(model, law, h, p);
             case ForceKind::time_dependent:
               break;
           }
-          return DirectTimeDependent(model, h, p);
+          return DirectTimeDependent(model, law, h, p);
         }
-        if constexpr (std::is_same_v<Params, FbNewtonParams>) return FbNewton(model, h, p);
+        if constexpr (std::is_same_v<Params, FbNewtonParams>) return FbNewton(model, law, h, p);
         if constexpr (std::is_same_v<Params, MoreauJeanParams>) {
-          if (!model.internal.empty()) return MoreauJeanInternal(model, h, p);
-          if (constant_force(model)) return MoreauJean(model, h, p);
-          return MoreauJeanTimeDependent(model, h, p);
+          if (!model.internal.empty()) return MoreauJeanInternal(model, law, h, p);
+          if (constant_force(model)) return MoreauJean(model, law, h, p);
+          return MoreauJeanTimeDependent(model, law, h, p);
         }
-        if constexpr (std::is_same_v<Params, PenaltyParams>) return Penalty(model, h, p);
+        if constexpr (std::is_same_v<Params, PenaltyParams>) return Penalty(model, law, h, p);
         if constexpr (std::is_same_v<Params, ExactParams>) {
           if (bonded(model)) return ExactBonded(model, h, p);
           return ExactStepper(model, h, p);
@@ -47,7 +50,7 @@ AnyStepper make_stepper(const Model& given, double h, const MethodParams& params
           return EventDriven(model, h, p);
         }
         if constexpr (std::is_same_v<Params, DirectLocatedParams>)
-          return DirectLocated(model, h, p);
+          return DirectLocated(model, law, h, p);
       },
       params);
 }

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <type_traits>
 
+#include "impact/capabilities.hpp"
 #include "impact/free_flight.hpp"
 #include "impact/method_params.hpp"
 #include "impact/model.hpp"
@@ -109,9 +110,13 @@ class BasicDirect {
   // The closed-form free flight only: throws std::invalid_argument for FreeFlightForm::paper
   // (DirectAsPrinted).
   BasicDirect(const Model& model, double h, const DirectParams& params)
+      : BasicDirect(model, contact_law(model, MethodParams(params)), h, params) {}
+  // `law`: the contact law the method applies (contact_law(model, params), capabilities.hpp),
+  // computed once by make_stepper.
+  BasicDirect(const Model& model, const ContactLaw& law, double h, const DirectParams& params)
       : phi_(model.phi),
         f_(model.f),
-        restitution_(restitution_rule(contact_law(model, SchemeLaw{}))),
+        restitution_(restitution_rule(law)),
         h_(h),
         contact_factor_(2 / (h * h)),
         flight_(model, h) {
@@ -216,11 +221,10 @@ using DirectTimeDependent = BasicDirect<ForceKind::time_dependent>;
 // the step's discrete force (scheme_flight.hpp); the COR law as in direct_contact.
 class DirectAsPrinted {
  public:
-  DirectAsPrinted(const Model& model, double h, const DirectParams&)
-      : phi_(model.phi),
-        restitution_(restitution_rule(contact_law(model, SchemeLaw{}))),
-        h_(h),
-        flight_(model, h) {}
+  DirectAsPrinted(const Model& model, double h, const DirectParams& params)
+      : DirectAsPrinted(model, contact_law(model, MethodParams(params)), h, params) {}
+  DirectAsPrinted(const Model& model, const ContactLaw& law, double h, const DirectParams&)
+      : phi_(model.phi), restitution_(restitution_rule(law)), h_(h), flight_(model, h) {}
 
   void initialize(const State& s, std::int64_t l) { flight_.start(l, {s.u - phi_, s.v}); }
 

@@ -20,6 +20,7 @@
 
 #include <cstdint>
 
+#include "impact/capabilities.hpp"
 #include "impact/contact_law.hpp"
 #include "impact/force.hpp"
 #include "impact/free_flight.hpp"
@@ -64,10 +65,13 @@ State located_step(const State& gap_state, const State& free, double t_l, double
 
 class DirectLocated {
  public:
-  DirectLocated(const Model& model, double h, const DirectLocatedParams&)
+  DirectLocated(const Model& model, double h, const DirectLocatedParams& params)
+      : DirectLocated(model, contact_law(model, MethodParams(params)), h, params) {}
+  // `law`: contact_law(model, params) (capabilities.hpp), computed once by make_stepper.
+  DirectLocated(const Model& model, const ContactLaw& law, double h, const DirectLocatedParams&)
       : phi_(model.phi),
         f_(model.f),
-        e_(newton_e(contact_law(model, kElasticReading))),
+        e_(newton_e(law)),
         h_(h),
         constant_(constant_force(model)),
         flight_(model, h),

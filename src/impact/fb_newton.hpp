@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <string>
 
+#include "impact/capabilities.hpp"
 #include "impact/free_flight.hpp"
 #include "impact/method_params.hpp"
 #include "impact/model.hpp"
@@ -19,11 +20,14 @@ namespace impact {
 class FbNewton {
  public:
   FbNewton(const Model& model, double h, const FbNewtonParams& params)
+      : FbNewton(model, contact_law(model, MethodParams(params)), h, params) {}
+  // `law`: contact_law(model, params) (capabilities.hpp), computed once by make_stepper.
+  FbNewton(const Model& model, const ContactLaw& law, double h, const FbNewtonParams& params)
       : model_(model),
         h_(h),
         params_(params),
         sqrt_eps_(std::sqrt(params.epsilon)),
-        restitution_(restitution_rule(contact_law(model, SchemeLaw{}))),
+        restitution_(restitution_rule(law)),
         flight_(model, h) {}
 
   // Works in gap coordinates (u - phi, v) from here on, see do_step.

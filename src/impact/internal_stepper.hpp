@@ -14,6 +14,7 @@
 #include <array>
 #include <cstdint>
 
+#include "impact/capabilities.hpp"
 #include "impact/internal.hpp"
 #include "impact/model.hpp"
 
@@ -26,7 +27,10 @@ class WithInternal {
 
   template <class Params>
   WithInternal(const Model& model, double h, const Params& params)
-      : base_(model, h, params),
+      : WithInternal(model, contact_law(model, MethodParams(params)), h, params) {}
+  template <class Params>
+  WithInternal(const Model& model, const ContactLaw& law, double h, const Params& params)
+      : base_(model, law, h, params),
         rates_(model),
         model_internal_(with_internal(model, {}).z),
         h_(h) {}

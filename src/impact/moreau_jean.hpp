@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <type_traits>
 
+#include "impact/capabilities.hpp"
 #include "impact/contact_law.hpp"
 #include "impact/method_params.hpp"
 #include "impact/model.hpp"
@@ -64,11 +65,15 @@ template <bool TimeDependent>
 class BasicMoreauJean {
  public:
   BasicMoreauJean(const Model& model, double h, const MoreauJeanParams& params)
+      : BasicMoreauJean(model, contact_law(model, MethodParams(params)), h, params) {}
+  // `law`: contact_law(model, params) (capabilities.hpp), computed once by make_stepper.
+  BasicMoreauJean(const Model& model, const ContactLaw& law, double h,
+                  const MoreauJeanParams& params)
       : phi_(model.phi),
         f_(model.f),
         h_(h),
         theta_(params.theta),
-        e_(newton_e(contact_law(model, kElasticReading))),
+        e_(newton_e(law)),
         force_(model, h) {}
   BasicMoreauJean(const BasicMoreauJean&) = default;
   BasicMoreauJean(BasicMoreauJean&&) noexcept = default;

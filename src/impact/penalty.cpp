@@ -17,6 +17,7 @@
 #include <string>
 #include <string_view>
 
+#include "impact/capabilities.hpp"
 #include "impact/contact_law.hpp"
 #include "impact/force.hpp"
 #include "impact/gsl_errors.hpp"
@@ -105,7 +106,7 @@ struct DriverFree {
 // The Impl lives on the heap and is never moved: gsl_odeiv2_system::params points to it and the
 // driver points to `sys`, so moving a Penalty (its unique_ptr) keeps both pointers valid.
 struct Penalty::Impl {
-  Impl(const Model& model, double h, const PenaltyParams& params);
+  Impl(const Model& model, const ContactLaw& law, double h, const PenaltyParams& params);
   Impl(const Impl&) = delete;
   Impl& operator=(const Impl&) = delete;
 
@@ -143,14 +144,15 @@ struct Penalty::Impl {
   std::array<double, 3> failure_y{};
 };
 
-Penalty::Impl::Impl(const Model& model, double grid_h, const PenaltyParams& params)
+Penalty::Impl::Impl(const Model& model, const ContactLaw& law, double grid_h,
+                    const PenaltyParams& params)
     : f(model.f),
       force(model),
       constant(force.constant()),
       phi(model.phi),
       h(grid_h),
       // The compliance law (contact_law.hpp), which refuses a COR.
-      c_N(std::get<ComplianceLaw>(contact_law(model, ComplianceLaw{params.stiffness})).stiffness) {
+      c_N(std::get<ComplianceLaw>(law).stiffness) {
   if (!(h > 0.0) || !std::isfinite(h)) throw std::invalid_argument("Penalty: h must be > 0");
   if (!(c_N > 0.0) || !std::isfinite(c_N))
     throw std::invalid_argument("Penalty: stiffness c_N must be > 0 and finite");
@@ -243,7 +245,9 @@ std::span<const std::string_view> penalty_stepper_names() {
 }
 
 Penalty::Penalty(const Model& model, double h, const PenaltyParams& params)
-    : impl_(std::make_unique<Impl>(model, h, params)) {}
+    : Penalty(model, contact_law(model, MethodParams(params)), h, params) {}
+Penalty::Penalty(const Model& model, const ContactLaw& law, double h, const PenaltyParams& params)
+    : impl_(std::make_unique<Impl>(model, law, h, params)) {}
 Penalty::Penalty(Penalty&&) noexcept = default;
 Penalty& Penalty::operator=(Penalty&&) noexcept = default;
 Penalty::~Penalty() = default;

@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 
+#include "impact/contact_law.hpp"
 #include "impact/method_params.hpp"
 #include "impact/model.hpp"
 
@@ -17,6 +18,9 @@ class Penalty {
  public:
   // Throws std::invalid_argument for parameters outside their ranges or an unknown stepper.
   Penalty(const Model& model, double h, const PenaltyParams& params);
+  // `law`: contact_law(model, params) (capabilities.hpp), a ComplianceLaw, computed once by
+  // make_stepper.
+  Penalty(const Model& model, const ContactLaw& law, double h, const PenaltyParams& params);
   Penalty(Penalty&&) noexcept;
   Penalty& operator=(Penalty&&) noexcept;
   ~Penalty();

@@ -6,6 +6,7 @@
 
 #include "analysis/error_analysis/error_bounds.hpp"
 #include "impact/contact.hpp"
+#include "impact/contact_law.hpp"
 #include "impact/direct_located.hpp"
 #include "impact/scheme_flight.hpp"
 
@@ -48,7 +49,7 @@ Rounding rounding_of(const Scene& scene, const Trace& exact) {
 }
 
 double SceneRuns::cor() const {
-  return scene.scene.model.cor.value_or(1.0);
+  return newton_e(contact_law(scene.scene.model, kElasticReading));
 }
 
 double SceneRuns::gap(const Trace& t, std::size_t l) const {

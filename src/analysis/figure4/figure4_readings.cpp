@@ -8,6 +8,7 @@
 #include <string>
 
 #include "analysis/fit.hpp"
+#include "impact/contact_law.hpp"
 #include "impact/direct.hpp"
 #include "impact/output.hpp"
 #include "impact/run.hpp"
@@ -27,7 +28,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 class ScaledRebound {
  public:
   ScaledRebound(const Model& model, double h)
-      : phi_(model.phi), f_(model.f), cor_(model.cor.value_or(1.0)), h_(h) {}
+      : phi_(model.phi), f_(model.f), cor_(newton_e(contact_law(model, kElasticReading))), h_(h) {}
 
   void initialize(const State& s, std::int64_t) {
     lanes_.anchor_gap = lanes_.gap = s.u - phi_;

@@ -9,6 +9,7 @@
 #include "analysis/order_table.hpp"
 #include "analysis/path_distance.hpp"
 #include "impact/any_stepper.hpp"
+#include "impact/contact_law.hpp"
 #include "impact/exact.hpp"
 #include "impact/output.hpp"
 #include "impact/scene.hpp"
@@ -124,7 +125,7 @@ toml::table perturbation_table(const PerturbationRun& run) {
 // Part 2: the weak formulation on one exact solution.
 toml::table weak_table(const Model& model, const State& initial, double T) {
   const WeakSolutionCheck c = check_weak_solution(ExactSolution(model, initial), model, T);
-  return toml::table{{"cor", model.cor.value_or(1.0)},
+  return toml::table{{"cor", newton_e(contact_law(model, kElasticReading))},
                      {"f", model.f},
                      {"u0", initial.u},
                      {"v0", initial.v},
