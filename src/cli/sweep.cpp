@@ -151,7 +151,7 @@ int run_sweep(const SweepOptions& o) {
   const auto rows = [&](SweepChunk& chunk) {
     RowWriter writer(grid, quantities);
     for (std::size_t p = 0; p < chunk.results.size(); ++p)
-      writer.append(chunk.text, shard.k + (chunk.first + static_cast<std::int64_t>(p)) * shard.n,
+      writer.append(chunk.text, shard_point(shard, chunk.first + static_cast<std::int64_t>(p)),
                     chunk.results[p]);
   };
   const auto write = [&](SweepChunk&& chunk) {

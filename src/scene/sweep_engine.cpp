@@ -99,7 +99,7 @@ class Runner {
     }
   };
 
-  std::int64_t point(std::int64_t position) const { return shard_.k + position * shard_.n; }
+  std::int64_t point(std::int64_t position) const { return shard_point(shard_, position); }
 
   void run_alone(const Scene& scene, PointResult& result) const {
     const auto start = timed_ ? Clock::now() : Clock::time_point();
@@ -299,8 +299,7 @@ SweepResult sweep(const SweepGrid& grid, const SweepSetup& setup) {
   const std::size_t axes = grid.axes().size();
   const auto take = [&](SweepChunk&& chunk) {
     for (std::size_t p = 0; p < chunk.results.size(); ++p) {
-      const std::int64_t i =
-          setup.shard.k + (chunk.first + static_cast<std::int64_t>(p)) * setup.shard.n;
+      const std::int64_t i = shard_point(setup.shard, chunk.first + static_cast<std::int64_t>(p));
       for (std::size_t k = 0; k < axes; ++k)
         out.columns[k].push_back(grid.axes()[k].value(grid.index(i, k)));
       PointResult& r = chunk.results[p];

@@ -23,6 +23,10 @@ struct Shard {
 };
 
 std::int64_t shard_points(const SweepGrid& grid, const Shard& shard);
+// The grid's index of the shard's point at `position` (0, 1, ...): k + position n.
+inline std::int64_t shard_point(const Shard& shard, std::int64_t position) {
+  return shard.k + position * shard.n;
+}
 
 // A caller's way to stop a sweep (the Python module's Ctrl-C): `poll`, when given, is called by
 // the calling thread at least every 20 ms while it waits, and what it throws leaves the sweep;
@@ -48,7 +52,7 @@ struct SweepSetup {
 // The most threads a sweep starts (impact sweep --threads, impact.sweep's threads).
 inline constexpr int kMaxThreads = 4096;
 
-// A run of consecutive points of the shard: results[p] is point shard.k + (first + p) * shard.n.
+// A run of consecutive points of the shard: results[p] is point shard_point(shard, first + p).
 struct SweepChunk {
   std::int64_t first = 0;
   std::vector<PointResult> results;
