@@ -173,11 +173,7 @@ py::dict exact(py::handle scene, py::array_t<double, py::array::c_style | py::ar
   const SignalPoll poll;
   Run loaded = without_gil([&] { return load(source); });
   const Scene& s = loaded.scene;
-  // The reference (error_norms.hpp) does not follow a bonding field yet.
-  if (bonded(s.model))
-    throw SceneError(
-        "exact(): the reference does not follow a bonding field yet ([bonding] with gamma beta0^2 "
-        "!= 0); run the scene with method exact or event_driven instead");
+  if (const auto r = reference_refusal(s.model)) throw SceneError("exact(): " + r->message);
   const py::ssize_t n = t.size();
   const double* times = t.data();
   for (py::ssize_t i = 0; i < n; ++i)

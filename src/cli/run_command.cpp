@@ -135,12 +135,9 @@ int run_command(const RunOptions& o, bool& in_place) {
   const auto start = Clock::now();
   Run loaded = load_run(o.scene, o.overrides, o.unsets);
   const Scene& scene = loaded.scene;
-  // The reference of --against (error_norms.hpp) and its energy do not follow the bonds yet.
-  if (o.against_exact && bonded(scene.model))
-    throw SceneError(o.scene +
-                     ": --against exact: the reference does not follow a bonding field yet "
-                     "([bonding] with gamma beta0^2 != 0); run the scene with method exact or "
-                     "event_driven instead");
+  if (o.against_exact)
+    if (const auto r = reference_refusal(scene.model))
+      throw SceneError(o.scene + ": --against exact: " + r->message);
   // T not a multiple of h: the grid stops short of T (Grid::covering); say so, and which h fits.
   if (!o.quiet && scene.grid.end() < scene.T && scene.T - scene.grid.end() > 1e-12 * scene.T)
     std::fprintf(stderr,

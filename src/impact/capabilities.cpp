@@ -119,6 +119,14 @@ std::string listed(const std::vector<std::string_view>& names) {
   return out;
 }
 
+// "a, b or c".
+std::string listed_or(std::vector<std::string_view> names) {
+  if (names.size() < 2) return listed(names);
+  const std::string_view last = names.back();
+  names.pop_back();
+  return listed(names) + " or " + std::string(last);
+}
+
 // 'name', built by appending (GCC 12 warns, wrongly, of an overlap in "'" + std::string).
 std::string quoted(const Asked& a) {
   std::string text = "'";
@@ -216,12 +224,7 @@ const Feature kFeatures[] = {
        for (const MethodInfo& m : methods())
          if (takes(m, a.model)) taking.push_back(m.name);
        std::string choose = "remove floor.cor (--unset floor.cor)";
-       if (!taking.empty()) {
-         const std::string_view last = taking.back();
-         taking.pop_back();
-         choose +=
-             " or choose " + listed(taking) + (taking.empty() ? "" : " or ") + std::string(last);
-       }
+       if (!taking.empty()) choose += " or choose " + listed_or(taking);
        return "method " + quoted(a) +
               " has no restitution law (its compliance contact is elastic); " + choose;
      },
@@ -287,6 +290,24 @@ const MethodInfo& reference_for(const Model& model) {
   for (const auto& m : kMethods)
     if (m.can.reference && takes(m, model)) return m;
   throw std::logic_error("no reference method takes this model");
+}
+
+std::optional<Refusal> reference_refusal(const Model& model) {
+  if (bonded(model))
+    return Refusal{"bonding", "gamma",
+                   "the reference does not follow a bonding field yet ([bonding] with gamma "
+                   "beta0^2 != 0); run the scene with method " +
+                       listed_or(methods_with(&Capabilities::bonding)) + " instead"};
+  const MethodInfo* first = nullptr;
+  for (const auto& m : kMethods) {
+    if (!m.can.reference) continue;
+    if (takes(m, model)) return std::nullopt;
+    if (!first) first = &m;
+  }
+  // No reference takes the model: what the first refuses.
+  std::optional<Refusal> r = refusal(first->defaults, model);
+  r->message = "no reference takes this model: " + r->message;
+  return r;
 }
 
 ContactLaw contact_law(const Model& model, const MethodParams& params) {

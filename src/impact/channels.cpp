@@ -1,41 +1,56 @@
 #include "impact/channels.hpp"
 
+#include <algorithm>
+#include <ranges>
+
 namespace impact {
 namespace {
 
-// In the order of the enum, so that channel_info() can index by it.
-const ChannelInfo kChannels[] = {
-    {Channel::u, "u", "position"},
-    {Channel::v, "v", "velocity"},
+// In the order of the enum, so that channel_info() can index by it (checked below).
+constexpr ChannelInfo kChannels[] = {
+    {Channel::u, "u", "position", nullptr, [](const OutputRow& r) { return r.state.u; }},
+    {Channel::v, "v", "velocity", nullptr, [](const OutputRow& r) { return r.state.v; }},
     {Channel::N, "N",
      "the mean contact force over the steps since the previous row: with output.every = 1, "
-     "N^{l-1} of (4-1), the contact impulse over (t_{l-1}, t_l] divided by h"},
+     "N^{l-1} of (4-1), the contact impulse over (t_{l-1}, t_l] divided by h",
+     nullptr, [](const OutputRow& r) { return r.contact_force; }},
     {Channel::E, "E",
      "energy v^2/2 - f u, (3-1); with a time-dependent force v^2/2 - f(0) u(0) - W(t), W the "
-     "work of f so far"},
+     "work of f so far",
+     nullptr, [](const OutputRow& r) { return r.energy; }},
     {Channel::iterations, "iterations",
      "Newton or ODE-driver iterations of the steps since the previous row",
-     &Capabilities::iterations_channel},
+     &Capabilities::iterations_channel,
+     [](const OutputRow& r) { return static_cast<double>(r.iterations); }},
     {Channel::N_scheme, "N_scheme",
      "N^l of (4-3) as the scheme's solve gives it, the mean over the steps since the previous row "
      "as N: with floor.cor, Newton's law then replaces the velocity, and h N_scheme (2|v| at an "
      "impact) is not the floor's impulse (1 + COR)|v|, which N carries; without floor.cor equal to "
      "N. The paper's N of Figures 3 and 4",
-     &Capabilities::scheme_force_channel},
-    {Channel::z1, "z1", "internal variable 1", &Capabilities::internal_variables},
-    {Channel::z2, "z2", "internal variable 2", &Capabilities::internal_variables},
-    {Channel::z3, "z3", "internal variable 3", &Capabilities::internal_variables},
-    {Channel::z4, "z4", "internal variable 4", &Capabilities::internal_variables},
+     &Capabilities::scheme_force_channel, [](const OutputRow& r) { return r.scheme_force; }},
+    {Channel::z1, "z1", "internal variable 1", &Capabilities::internal_variables,
+     [](const OutputRow& r) { return r.internal[0]; }},
+    {Channel::z2, "z2", "internal variable 2", &Capabilities::internal_variables,
+     [](const OutputRow& r) { return r.internal[1]; }},
+    {Channel::z3, "z3", "internal variable 3", &Capabilities::internal_variables,
+     [](const OutputRow& r) { return r.internal[2]; }},
+    {Channel::z4, "z4", "internal variable 4", &Capabilities::internal_variables,
+     [](const OutputRow& r) { return r.internal[3]; }},
     {Channel::beta, "beta", "the fraction of active bonds, in [0, 1], never rising ([bonding])",
-     &Capabilities::bonding},
+     &Capabilities::bonding, [](const OutputRow& r) { return r.internal[kBondFraction]; }},
     {Channel::D, "D",
      "the energy spent breaking bonds, int 2 gamma beta^2 Phi(g) (gamma R^2 - eps_a)_+ dt: E + D "
      "is E(0) less the impacts' losses ([bonding])",
-     &Capabilities::bonding},
+     &Capabilities::bonding, [](const OutputRow& r) { return r.internal[kBondEnergy]; }},
 };
 constexpr std::size_t kFixed = 6;                        // the channels before z1
 constexpr std::size_t kBonding = kFixed + kMaxInternal;  // the first of the bonding field's
-static_assert(std::size(kChannels) == kBonding + 2);
+static_assert(std::size(kChannels) == kBonding + 2 && kMaxInternal == 4);
+static_assert(std::ranges::all_of(std::views::iota(std::size_t{0}, std::size(kChannels)),
+                                  [](std::size_t i) {
+                                    return kChannels[i].channel == static_cast<Channel>(i);
+                                  }),
+              "kChannels must list the channels in the order of the enum");
 
 }  // namespace
 
@@ -73,30 +88,7 @@ bool can_write(const MethodInfo& method, Channel channel) {
 }
 
 double channel_value(const OutputRow& row, Channel channel) {
-  switch (channel) {
-    case Channel::u:
-      return row.state.u;
-    case Channel::v:
-      return row.state.v;
-    case Channel::N:
-      return row.contact_force;
-    case Channel::E:
-      return row.energy;
-    case Channel::iterations:
-      return static_cast<double>(row.iterations);
-    case Channel::N_scheme:
-      return row.scheme_force;
-    case Channel::z1:
-    case Channel::z2:
-    case Channel::z3:
-    case Channel::z4:
-      break;
-    case Channel::beta:
-      return row.internal[kBondFraction];
-    case Channel::D:
-      return row.internal[kBondEnergy];
-  }
-  return row.internal[*internal_index(channel)];
+  return channel_info(channel).value(row);
 }
 
 }  // namespace impact

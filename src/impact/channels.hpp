@@ -1,6 +1,6 @@
-// The channels a run can write (a row's columns after t), once: their names, what each is, and the
-// capability a method needs to write it (capabilities.hpp). The scene reader, the help and the CSV
-// writer read this table.
+// The channels a run can write (a row's columns after t), once: their names, what each is, the
+// capability a method needs to write it (capabilities.hpp) and where a row (row.hpp) holds its
+// value. The scene reader, the help, the CSV writer, the plot and Python read this table.
 #pragma once
 
 #include <cstddef>
@@ -22,7 +22,8 @@ enum class Channel { u, v, N, E, iterations, N_scheme, z1, z2, z3, z4, beta, D }
 struct ChannelInfo {
   Channel channel;
   std::string_view name, meaning;
-  bool Capabilities::*needs = nullptr;  // what a method must have to write it; nullptr: any
+  bool Capabilities::*needs;          // what a method must have to write it; nullptr: any
+  double (*value)(const OutputRow&);  // a row's value of it (iterations as a double)
 };
 
 // The channels every model has (u, v, N, E, iterations, N_scheme).

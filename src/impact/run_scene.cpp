@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "impact/capabilities.hpp"
 #include "impact/output.hpp"
 #include "impact/step_events.hpp"
 #include "impact/work_energy.hpp"
@@ -66,11 +67,10 @@ RunReport run_scene(const Scene& scene, AnyStepper& stepper, const RunOutputs& o
       log.emplace(scene.model, scene.grid.h, outputs.events);
   }
   std::optional<ErrorObserver> errors;
-  // The reference and its energy do not follow a bonding field yet: refused, never measured wrong.
-  if (outputs.against_exact && bonded(scene.model))
-    throw std::invalid_argument(
-        "the errors against the exact solution: its reference does not follow a bonding field "
-        "yet ([bonding] with gamma beta0^2 != 0)");
+  // What the reference does not follow is refused, never measured wrong.
+  if (outputs.against_exact)
+    if (const auto r = reference_refusal(scene.model))
+      throw std::invalid_argument("the errors against the exact solution: " + r->message);
   if (outputs.against_exact) errors.emplace(scene.model, scene.initial, scene.grid);
   SummaryObserver summary(scene.model, scene.grid);
 
