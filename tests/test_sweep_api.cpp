@@ -35,6 +35,18 @@ void check_columns_are_csv(const SweepResult& got, const std::string& csv) {
     CHECK(rows[i + 1].back() == got.failures[i]);
 }
 
+// Two sweeps' columns, bit for bit (a NaN, a failed point's, matches any NaN).
+void check_same_columns(const SweepResult& got, const SweepResult& want) {
+  REQUIRE(got.names == want.names);
+  CHECK(got.failures == want.failures);
+  for (std::size_t k = 0; k < want.columns.size(); ++k)
+    for (std::size_t i = 0; i < want.columns[k].size(); ++i) {
+      INFO(want.names[k] << " at point " << i);
+      CHECK((same_bits(got.columns[k][i], want.columns[k][i]) ||
+             (std::isnan(got.columns[k][i]) && std::isnan(want.columns[k][i]))));
+    }
+}
+
 }  // namespace
 
 TEST_CASE("sweep: impact::sweep()'s columns are the CSV of impact sweep, bit for bit",
@@ -71,13 +83,7 @@ TEST_CASE("sweep: impact::sweep()'s columns are the CSV of impact sweep, bit for
       const SweepGrid from_text(SceneText{scene, "<text>"}, sets, axes);
       SweepSetup one = setup;
       one.threads = 1;
-      const SweepResult again = impact::sweep(from_text, one);
-      CHECK(again.names == got.names);
-      CHECK(again.failures == got.failures);
-      for (std::size_t k = 0; k < got.columns.size(); ++k)
-        for (std::size_t i = 0; i < got.columns[k].size(); ++i)
-          CHECK((same_bits(again.columns[k][i], got.columns[k][i]) ||
-                 (std::isnan(again.columns[k][i]) && std::isnan(got.columns[k][i]))));
+      check_same_columns(impact::sweep(from_text, one), got);
     }
 }
 
@@ -91,4 +97,57 @@ TEST_CASE("sweep: impact::sweep() refuses a thread count out of range", "[sweep]
     SweepSetup setup{parse_summary("", false), false, Shard{}, threads, "", {}};
     CHECK_THROWS_WITH(impact::sweep(grid, setup), Contains("threads (1 to 4096)"));
   }
+}
+
+TEST_CASE("sweep: a Scene value and axes of values sweep as the file and its --vary do",
+          "[sweep][regression]") {
+  TempDir dir;
+  const std::string scene =
+      "[initial]\nu0 = 1.0\nv0 = 0.0\n[force]\nf = -9.81\n[floor]\ncor = 0.5\n"
+      "[time]\nT = 1.0\nh = 1e-3\n[method]\nname = \"moreau_jean\"\n[output]\nevery = 10\n";
+  dir.write("drop.toml", scene);
+  const std::vector<SweepAxis> varied = {SweepAxis("floor.cor=0:1:5"),
+                                         SweepAxis("time.h=1e-4:1e-2:3:log")};
+  const SweepGrid from_file(dir / "drop.toml", {}, varied);
+  // The same values as lists, on the scene the reader gives for the file.
+  std::vector<SweepAxis> listed;
+  for (const SweepAxis& axis : varied) {
+    std::vector<double> values;
+    for (std::int64_t j = 0; j < axis.size(); ++j) values.push_back(axis.value(j));
+    listed.emplace_back(axis.key(), values);
+  }
+  const Scene base = load_scene(dir / "drop.toml");
+  const SweepSetup setup{parse_summary("", false, base.model), false, Shard{}, 1, "", {}};
+  const SweepResult want = impact::sweep(from_file, setup);
+  const SweepResult got = impact::sweep(base, listed, setup);
+  CHECK(got.points == 15);
+  check_same_columns(got, want);
+  // Point 0's scene is the file's with the first values, grid included.
+  const SweepGrid grid(base, listed);
+  CHECK(grid.base().model.cor == from_file.base().model.cor);
+  CHECK(same_bits(grid.base().grid.h, from_file.base().grid.h));
+  CHECK(grid.base().grid.steps == from_file.base().grid.steps);
+  CHECK(grid.scene_text().empty());
+}
+
+TEST_CASE("sweep: axes of values are checked as --vary is, naming the axis and the point",
+          "[sweep][regression]") {
+  TempDir dir;
+  dir.write("drop.toml",
+            "[initial]\nu0 = 1.0\nv0 = 0.0\n[time]\nT = 1.0\nh = 1e-2\n[method]\nname = "
+            "\"direct\"\n");
+  const Scene base = load_scene(dir / "drop.toml");
+  CHECK_THROWS_WITH(SweepAxis("floor.cor", {}), Contains("axis floor.cor: no values"));
+  CHECK_THROWS_WITH(SweepAxis("floor.cor", {0.5, std::nan("")}),
+                    Contains("axis floor.cor: nan is not a finite number"));
+  // Out of the key's range, at the point that has it.
+  CHECK_THROWS_WITH(SweepGrid(base, {SweepAxis("floor.cor", {0.5, 2.0})}),
+                    Contains("point 2 of 2 (floor.cor=2)") && Contains("floor.cor = 2"));
+  // A key of another method, a variable the scene does not have, a key no sweep varies.
+  CHECK_THROWS_WITH(SweepGrid(base, {SweepAxis("method.stiffness", {1e6})}),
+                    Contains("method.stiffness is not a key of the scene's method direct"));
+  CHECK_THROWS_WITH(SweepGrid(base, {SweepAxis("internal.z.initial", {1.0})}),
+                    Contains("the scene has no internal variable z"));
+  CHECK_THROWS_WITH(SweepGrid(base, {SweepAxis("force.expression", {1.0})}),
+                    Contains("not a key a sweep can vary"));
 }

@@ -317,4 +317,8 @@ SweepResult sweep(const SweepGrid& grid, const SweepSetup& setup) {
   return out;
 }
 
+SweepResult sweep(const Scene& scene, std::vector<SweepAxis> axes, const SweepSetup& setup) {
+  return sweep(SweepGrid(scene, std::move(axes)), setup);
+}
+
 }  // namespace impact

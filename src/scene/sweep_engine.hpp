@@ -87,5 +87,8 @@ struct SweepResult {
   std::int64_t points = 0, failed = 0;
 };
 SweepResult sweep(const SweepGrid& grid, const SweepSetup& setup);
+// The same for a Scene a program built and its axes as values: sweep(SweepGrid(scene, axes),
+// setup).
+SweepResult sweep(const Scene& scene, std::vector<SweepAxis> axes, const SweepSetup& setup);
 
 }  // namespace impact

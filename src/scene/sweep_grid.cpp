@@ -151,6 +151,18 @@ std::vector<std::string> sweep_keys() {
   return keys;
 }
 
+SweepAxis::SweepAxis(std::string key, std::vector<double> values)
+    : key_(std::move(key)),
+      size_(static_cast<std::int64_t>(values.size())),
+      list_(std::move(values)) {
+  if (list_.empty()) throw SceneError("axis " + key_ + ": no values");
+  for (double& x : list_) {
+    if (!std::isfinite(x))
+      throw SceneError("axis " + key_ + ": " + shortest(x) + " is not a finite number");
+    x += 0.0;  // -0 as the reader reads it: 0
+  }
+}
+
 SweepGrid::SweepGrid(const std::string& scene_path, const std::vector<std::string>& overrides,
                      std::vector<SweepAxis> axes)
     : SweepGrid(
@@ -164,9 +176,9 @@ SweepGrid::SweepGrid(const SceneText& scene, const std::vector<std::string>& ove
           scene.source, [&](const std::vector<std::string>& all) { return load_run(scene, all); },
           overrides, std::move(axes)) {}
 
-SweepGrid::SweepGrid(const std::string& source, const Loader& load,
-                     const std::vector<std::string>& overrides, std::vector<SweepAxis> axes)
-    : path_(source), overrides_(overrides), axes_(std::move(axes)) {
+SweepGrid::SweepGrid(std::vector<SweepAxis> axes, std::string source,
+                     std::vector<std::string> overrides)
+    : path_(std::move(source)), overrides_(std::move(overrides)), axes_(std::move(axes)) {
   const auto& names = numeric_key_names();
   for (const SweepAxis& axis : axes_) {
     if (std::find(names.begin(), names.end(), axis.key()) == names.end() &&
@@ -192,6 +204,11 @@ SweepGrid::SweepGrid(const std::string& source, const Loader& load,
     if (__builtin_mul_overflow(size_, axes_[k].size(), &size_) || size_ > (std::int64_t{1} << 53))
       throw SceneError("--vary: more than 2^53 points");
   }
+}
+
+SweepGrid::SweepGrid(const std::string& source, const Loader& load,
+                     const std::vector<std::string>& overrides, std::vector<SweepAxis> axes)
+    : SweepGrid(std::move(axes), source, overrides) {
   try {
     std::vector<std::string> all = overrides_;
     for (const std::string& o : this->overrides(0)) all.push_back(o);
@@ -201,6 +218,32 @@ SweepGrid::SweepGrid(const std::string& source, const Loader& load,
   } catch (const SceneError& e) {
     throw SceneError(describe(0) + ": " + e.what());
   }
+  check_points();
+}
+
+SweepGrid::SweepGrid(const Scene& scene, std::vector<SweepAxis> axes)
+    : SweepGrid(std::move(axes), "the scene", {}) {
+  base_ = scene;
+  // What the reader refuses when it reads a file: a [method] key of another method than the
+  // scene's, an internal variable the scene does not have.
+  for (const SweepAxis& axis : axes_) {
+    if (!internal_number(axis.key())) {
+      if (!numeric_spec(axis.key(), method_name(base_.method)))
+        throw SceneError(describe(0) + ": " + axis.key() + " is not a key of the scene's method " +
+                         std::string(method_name(base_.method)));
+      continue;
+    }
+    const std::string name = internal_key(axis.key())->name;
+    if (std::none_of(scene.model.internal.begin(), scene.model.internal.end(),
+                     [&](const InternalVariable& z) { return z.name == name; }))
+      throw SceneError(describe(0) + ": " + axis.key() + ": the scene has no internal variable " +
+                       name);
+  }
+  check_points();
+  apply(0, base_);  // base() is point 0's scene, as the reader reads it
+}
+
+void SweepGrid::check_points() {
   // A [method] key of another method than the scene's was refused by the reader above.
   // An internal variable's key: the variable, which the reader found (point 0 set it).
   for (const SweepAxis& axis : axes_) {

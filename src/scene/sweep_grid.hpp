@@ -26,6 +26,9 @@ class SweepAxis {
  public:
   // Throws SceneError naming the --vary and what is wrong; the key is checked by SweepGrid.
   explicit SweepAxis(const std::string& vary);
+  // The values given, in their order (a program's own list): the same as `key=v1,v2,...`. Throws
+  // SceneError for an empty list or a value that is not finite.
+  SweepAxis(std::string key, std::vector<double> values);
 
   const std::string& key() const { return key_; }
   std::int64_t size() const { return size_; }
@@ -65,6 +68,10 @@ class SweepGrid {
   using Loader = std::function<Run(const std::vector<std::string>&)>;
   SweepGrid(const std::string& source, const Loader& load,
             const std::vector<std::string>& overrides, std::vector<SweepAxis> axes);
+  // The same for a Scene a program built (make_scene, or read and edited): point i is `scene` with
+  // the axes' values set, each checked as the reader checks the key. Messages name it "the scene";
+  // scene_text() is empty.
+  SweepGrid(const Scene& scene, std::vector<SweepAxis> axes);
 
   std::int64_t size() const { return size_; }
   const std::vector<SweepAxis>& axes() const { return axes_; }
@@ -88,6 +95,11 @@ class SweepGrid {
   std::string describe(std::int64_t i) const;
 
  private:
+  // What every constructor does before it has a scene: the axes' keys and the strides.
+  SweepGrid(std::vector<SweepAxis> axes, std::string source, std::vector<std::string> overrides);
+  // What every constructor does once base_ is point 0's scene: each axis's key, then every point
+  // checked.
+  void check_points();
   void set_values(std::int64_t i, Scene& scene) const;
   // Throws the SceneError of point i's table.key: what is wrong, where the value came from.
   [[noreturn]] void fail(std::int64_t i, std::string_view table, std::string_view key,
