@@ -109,80 +109,24 @@ void refuse_value_list(mu::Parser& parser) {
                                 "last; give one (a comma only separates arguments)");
 }
 
-// One parser per rate, all bound to the same variables.
-struct InternalRates::Parsers {
-  explicit Parsers(const Model& model) : rates(model.internal.size()) {
-    for (std::size_t i = 0; i < rates.size(); ++i) {
-      const InternalVariable& variable = model.internal[i];
-      const std::string what = "the rate of internal variable \"" + variable.name + "\"";
-      if (variable.rate.find_first_not_of(" \t") == std::string::npos)
-        throw std::invalid_argument(what + " is empty; give g in " + variable.name + "' = g(" +
-                                    variables_named(model) + ")");
-      try {
-        refuse_assignment(variable.rate, "a rate only reads " + variables_named(model));
-      } catch (const std::invalid_argument& e) {
-        throw std::invalid_argument(what + ": " + e.what());
-      }
-      z = with_internal(model, {}).z;
-      try {
-        define_variables(rates[i], t, u, v, model, z.data());
-        rates[i].SetExpr(variable.rate);
-        // The first Eval parses: an unknown name or a malformed expression fails here, and the
-        // values it gives are counted. Its value (at t = 0, u = v = 0) is not checked: the scene
-        // reader evaluates the rates at the initial state.
-        rates[i].Eval();
-        refuse_value_list(rates[i]);
-      } catch (const mu::Parser::exception_type& e) {
-        throw std::invalid_argument(what + " does not parse: " + e.GetMsg() +
-                                    " (the variables are " + variables_named(model) + ")");
-      } catch (const std::invalid_argument& e) {
-        throw std::invalid_argument(what + ": " + e.what());
-      }
-    }
-  }
-  std::vector<mu::Parser> rates;
-  double t = 0.0, u = 0.0, v = 0.0;
-  std::array<double, kMaxInternal> z{};
-};
-
-InternalRates::InternalRates(const Model& model)
-    : model_(model), count_(model.internal.size()), parsers_() {
+InternalRates::InternalRates(const Model& model) : model_(model), count_(model.internal.size()) {
   check_internal_variables(model);
-  parsers_ = std::make_unique<Parsers>(model_);
+  for (InternalVariable& z : model_.internal) z.rate = z.rate.compiled(model_.internal, z.name);
 }
-
-InternalRates::InternalRates(const InternalRates& other)
-    : model_(other.model_),
-      count_(other.count_),
-      parsers_(std::make_unique<Parsers>(other.model_)) {}
-
-InternalRates& InternalRates::operator=(const InternalRates& other) {
-  if (this != &other) *this = InternalRates(other);
-  return *this;
-}
-
-InternalRates::InternalRates(InternalRates&&) noexcept = default;
-InternalRates& InternalRates::operator=(InternalRates&&) noexcept = default;
-InternalRates::~InternalRates() = default;
 
 void InternalRates::evaluate(double t, const StateWithInternal& s,
                              std::array<double, kMaxInternal>& rate) const {
-  Parsers& p = *parsers_;
-  p.t = t;
-  p.u = s.u;
-  p.v = s.v;
-  p.z = s.z;
   for (std::size_t i = 0; i < count_; ++i) {
-    const std::string& name = model_.internal[i].name;
+    const InternalVariable& z = model_.internal[i];
     try {
-      rate[i] = p.rates[i].Eval();
-    } catch (const mu::Parser::exception_type& e) {
-      throw std::runtime_error("the rate of internal variable \"" + name +
-                               "\" fails at t = " + round_trip(t) + ": " + e.GetMsg() +
+      rate[i] = z.rate(t, s.u, s.v, s.z.data());
+    } catch (const std::runtime_error& e) {
+      throw std::runtime_error("the rate of internal variable \"" + z.name +
+                               "\" fails at t = " + round_trip(t) + ": " + e.what() +
                                " (the variables are " + variables_named(model_) + ")");
     }
     if (!std::isfinite(rate[i]))
-      throw std::runtime_error("the rate of internal variable \"" + name + "\" is " +
+      throw std::runtime_error("the rate of internal variable \"" + z.name + "\" is " +
                                round_trip(rate[i]) + " at t = " + round_trip(t) +
                                "; it must be finite wherever the run evaluates it");
   }

@@ -4,7 +4,6 @@
 #pragma once
 
 #include <array>
-#include <memory>
 #include <string>
 #include <vector>
 
@@ -48,13 +47,10 @@ class InternalRates {
   // is not finite where the run evaluates it is reported there (evaluate); the scene reader
   // evaluates every rate at the initial state.
   explicit InternalRates(const Model& model);
-  InternalRates(const InternalRates& other);
-  InternalRates& operator=(const InternalRates& other);
-  InternalRates(InternalRates&&) noexcept;
-  InternalRates& operator=(InternalRates&&) noexcept;
-  ~InternalRates();
 
   std::size_t size() const { return count_; }
+  // The model with its rates compiled (what the scene reader keeps).
+  const Model& model() const { return model_; }
   // rate[i] = g_i(t, s.u, s.v, s.z) for i < size(); std::runtime_error naming the variable and t
   // where a rate fails or is not finite.
   void evaluate(double t, const StateWithInternal& s, std::array<double, kMaxInternal>& rate) const;
@@ -64,10 +60,8 @@ class InternalRates {
                                             double* rate) const;
 
  private:
-  struct Parsers;
-  Model model_;
+  Model model_;  // its rates compiled, evaluated through this copy's own parsers
   std::size_t count_ = 0;
-  std::unique_ptr<Parsers> parsers_;
 };
 
 }  // namespace impact

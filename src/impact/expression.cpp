@@ -1,0 +1,245 @@
+#include "impact/expression.hpp"
+
+#include <muParser.h>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cctype>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "impact/format.hpp"
+#include "impact/internal.hpp"
+#include "impact/model.hpp"
+
+namespace impact {
+
+namespace {
+
+std::atomic<std::size_t> parses{0};
+
+// A token muparser could not read that starts as a number does ("9.8e", "2.5e+").
+bool starts_number(const std::string& token) {
+  return !token.empty() && (std::isdigit(static_cast<unsigned char>(token[0])) || token[0] == '.');
+}
+
+// The number that starts at `position` of the text: digits, '.', an exponent and its sign.
+std::string number_at(const std::string& text, std::size_t position) {
+  std::size_t end = position;
+  while (end < text.size()) {
+    const char c = text[end];
+    const bool sign =
+        (c == '+' || c == '-') && end > position && (text[end - 1] == 'e' || text[end - 1] == 'E');
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '.' || sign)) break;
+    ++end;
+  }
+  return text.substr(position, end - position);
+}
+
+Model with_variables(const std::vector<InternalVariable>& internal) {
+  Model model;
+  model.internal = internal;
+  return model;
+}
+
+}  // namespace
+
+struct Expression::Facts {
+  std::string text;
+  bool compiled = false;
+  bool state = false;               // reads u, v or an internal variable
+  std::vector<std::string> names;   // the internal variables', z[0..m) of an evaluation
+  std::array<double, kMaxInternal> initial{};
+};
+
+// The variables are bound by address: the parser and its variables stay together on the heap.
+struct Expression::Parser {
+  explicit Parser(const Facts& facts) : count(facts.names.size()) {
+    parser.DefineVar("t", &t);
+    parser.DefineVar("u", &u);
+    parser.DefineVar("v", &v);
+    for (std::size_t i = 0; i < count; ++i) parser.DefineVar(facts.names[i], &z[i]);
+    parser.DefineConst("pi", std::numbers::pi);
+    parser.SetExpr(facts.text);
+    ++parses;  // muparser parses the text at the first Eval
+  }
+  double eval() {
+    try {
+      return parser.Eval();
+    } catch (const mu::Parser::exception_type& e) {
+      throw std::runtime_error(e.GetMsg());
+    }
+  }
+  mu::Parser parser;
+  double t = 0.0, u = 0.0, v = 0.0;
+  std::array<double, kMaxInternal> z{};
+  std::size_t count;
+};
+
+Expression::Expression(std::string text) {
+  if (text.empty()) return;
+  auto facts = std::make_shared<Facts>();
+  facts->text = std::move(text);
+  facts_ = std::move(facts);
+}
+
+Expression::Expression() = default;
+
+Expression::Expression(const char* text) : Expression(std::string(text)) {}
+
+Expression::Expression(std::string text, const std::vector<InternalVariable>& internal,
+                       std::string_view rate_of) {
+  auto facts = std::make_shared<Facts>();
+  facts->text = std::move(text);
+  facts->compiled = true;
+  for (std::size_t i = 0; i < internal.size() && i < kMaxInternal; ++i) {
+    facts->names.push_back(internal[i].name);
+    facts->initial[i] = internal[i].initial;
+  }
+  const Model model = with_variables(internal);
+  const std::string& text_ = facts->text;
+  if (!rate_of.empty()) {
+    const std::string name(rate_of);
+    const std::string what = "the rate of internal variable \"" + name + "\"";
+    if (text_.find_first_not_of(" \t") == std::string::npos)
+      throw std::invalid_argument(what + " is empty; give g in " + name + "' = g(" +
+                                  variables_named(model) + ")");
+    try {
+      refuse_assignment(text_, "a rate only reads " + variables_named(model));
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(what + ": " + e.what());
+    }
+    std::unique_ptr<Parser> parser;
+    try {
+      parser = std::make_unique<Parser>(*facts);
+      parser->z = facts->initial;
+      // The first Eval parses: an unknown name or a malformed expression fails here, and the
+      // values it gives are counted. Its value (at t = 0, u = v = 0) is not checked: the scene
+      // reader evaluates the rates at the initial state.
+      parser->parser.Eval();
+      refuse_value_list(parser->parser);
+    } catch (const mu::Parser::exception_type& e) {
+      throw std::invalid_argument(what + " does not parse: " + e.GetMsg() +
+                                  " (the variables are " + variables_named(model) + ")");
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(what + ": " + e.what());
+    }
+    facts_ = std::move(facts);
+    parser_ = std::move(parser);
+    return;
+  }
+  if (text_.size() > kMaxExpressionLength)
+    throw std::invalid_argument("the expression has " + std::to_string(text_.size()) +
+                                " characters; at most " + std::to_string(kMaxExpressionLength) +
+                                " are allowed");
+  if (text_.find_first_not_of(" \t") == std::string::npos)
+    throw std::invalid_argument("the expression is empty; give a function of t (and u, v)");
+  refuse_assignment(text_, "a force only reads " + variables_named(model));
+  std::unique_ptr<Parser> parser;
+  try {
+    parser = std::make_unique<Parser>(*facts);
+    parser->z = facts->initial;
+    const double f0 = parser->parser.Eval();
+    // muparser records the variables it read as the first Eval parses (GetUsedVar parses again,
+    // and so does the next Eval).
+    const auto& used = parser->parser.GetUsedVar();
+    facts->state = used.count("u") > 0 || used.count("v") > 0;
+    for (const std::string& name : facts->names) facts->state = facts->state || used.count(name) > 0;
+    refuse_value_list(parser->parser);
+    // A force of t alone must be finite where every run starts; one of the state is probed at
+    // the scene's initial state by the scene reader (check_force), and elsewhere where the run
+    // evaluates it.
+    if (!std::isfinite(f0) && !facts->state)
+      throw std::invalid_argument("the expression is " + round_trip(f0) +
+                                  " at t = 0; it must be finite");
+  } catch (const mu::Parser::exception_type& e) {
+    // Positions are counted from 1 here; muparser's own message counts from 0, so it is left
+    // out where the position is all it adds.
+    const std::string at = " at position " + std::to_string(e.GetPos() + 1);
+    if (e.GetCode() == mu::ecUNASSIGNABLE_TOKEN && starts_number(e.GetToken()))
+      throw std::invalid_argument("the number \"" + number_at(text_, e.GetPos()) + "\"" + at +
+                                  " is malformed (a number is digits with an optional fraction "
+                                  "and exponent, as 9.8, .5 or 2.5e-3)");
+    if (e.GetCode() == mu::ecUNASSIGNABLE_TOKEN)
+      throw std::invalid_argument("the expression uses \"" + e.GetToken() + "\"" + at +
+                                  ", which is no variable or function muparser knows (the "
+                                  "variables are " +
+                                  variables_named(model) + "; pi is defined)");
+    throw std::invalid_argument("the expression does not parse" + at + ": " + e.GetMsg() +
+                                " (the variables are " + variables_named(model) +
+                                "; pi is defined)");
+  }
+  facts_ = std::move(facts);
+  parser_ = std::move(parser);
+}
+
+// A copy shares the facts and makes its own parser when it first evaluates.
+Expression::Expression(const Expression& other) : facts_(other.facts_) {}
+
+Expression& Expression::operator=(const Expression& other) {
+  if (this != &other) {
+    facts_ = other.facts_;
+    parser_.reset();
+  }
+  return *this;
+}
+
+Expression::Expression(Expression&&) noexcept = default;
+Expression& Expression::operator=(Expression&&) noexcept = default;
+Expression::~Expression() = default;
+
+const std::string& Expression::text() const {
+  static const std::string none;
+  return facts_ ? facts_->text : none;
+}
+
+bool Expression::is_compiled() const {
+  return facts_ && facts_->compiled;
+}
+
+Expression Expression::compiled(const std::vector<InternalVariable>& internal,
+                                std::string_view rate_of) const {
+  if (is_compiled() && facts_->names.size() == std::min(internal.size(), kMaxInternal)) {
+    bool same = true;
+    for (std::size_t i = 0; i < facts_->names.size(); ++i)
+      same = same && facts_->names[i] == internal[i].name;
+    if (same) return *this;
+  }
+  return Expression(text(), internal, rate_of);
+}
+
+bool Expression::reads_state() const {
+  return facts_ && facts_->state;
+}
+
+Expression::Parser& Expression::parser() const {
+  if (!parser_) {
+    if (!is_compiled())
+      throw std::logic_error("Expression: \"" + text() + "\" is evaluated before it is compiled");
+    parser_ = std::make_unique<Parser>(*facts_);
+  }
+  return *parser_;
+}
+
+double Expression::operator()(double t) const {
+  Parser& p = parser();
+  p.t = t;
+  return p.eval();
+}
+
+double Expression::operator()(double t, double u, double v, const double* z) const {
+  Parser& p = parser();
+  p.t = t;
+  p.u = u;
+  p.v = v;
+  for (std::size_t i = 0; i < p.count; ++i) p.z[i] = z[i];
+  return p.eval();
+}
+
+std::size_t expression_parses() {
+  return parses.load();
+}
+
+}  // namespace impact
