@@ -9,10 +9,9 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <string_view>
 
 #include "impact/format.hpp"
-#include "impact/internal.hpp"
-#include "impact/model.hpp"
 
 namespace impact {
 
@@ -38,10 +37,36 @@ std::string number_at(const std::string& text, std::size_t position) {
   return text.substr(position, end - position);
 }
 
-Model with_variables(const std::vector<InternalVariable>& internal) {
-  Model model;
-  model.internal = internal;
-  return model;
+// What a force expression and a rate may not be, checked on the text before muparser sees it:
+// an assignment with '=' (muparser's "t = 1" sets t; "+=", "-=", ... too), which would change a
+// variable that the force and the other rates read. `reads` says what the expression may read.
+void refuse_assignment(const std::string& text, const std::string& reads) {
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] != '=') continue;
+    const bool comparison =
+        (i > 0 && std::string_view("=!<>").find(text[i - 1]) != std::string_view::npos) ||
+        (i + 1 < text.size() && text[i + 1] == '=');
+    if (comparison) continue;
+    // The name assigned to: the word before the '=' (or the operator, "+=").
+    std::size_t end = i;
+    if (end > 0 && std::string_view("+-*/").find(text[end - 1]) != std::string_view::npos) --end;
+    while (end > 0 && text[end - 1] == ' ') --end;
+    std::size_t start = end;
+    while (start > 0 &&
+           (std::isalnum(static_cast<unsigned char>(text[start - 1])) || text[start - 1] == '_'))
+      --start;
+    const std::string name = start < end ? text.substr(start, end - start) : "a value";
+    throw std::invalid_argument("the expression assigns to " + name + " with '=' at position " +
+                                std::to_string(i + 1) + "; " + reads + " (to compare, write '==')");
+  }
+}
+
+// After the first Eval: several comma-separated values ("1,2"), of which muparser keeps the last.
+void refuse_value_list(mu::Parser& parser) {
+  if (const int values = parser.GetNumResults(); values > 1)
+    throw std::invalid_argument("the expression has " + std::to_string(values) +
+                                " values separated by commas, of which muparser would keep the "
+                                "last; give one (a comma only separates arguments)");
 }
 
 }  // namespace
@@ -49,18 +74,17 @@ Model with_variables(const std::vector<InternalVariable>& internal) {
 struct Expression::Facts {
   std::string text;
   bool compiled = false;
-  bool state = false;               // reads u, v or an internal variable
-  std::vector<std::string> names;   // the internal variables', z[0..m) of an evaluation
-  std::array<double, kMaxInternal> initial{};
+  bool state = false;             // reads u, v or an internal variable
+  ExpressionVariables variables;  // z[0..m) of an evaluation
 };
 
 // The variables are bound by address: the parser and its variables stay together on the heap.
 struct Expression::Parser {
-  explicit Parser(const Facts& facts) : count(facts.names.size()) {
+  explicit Parser(const Facts& facts) : count(facts.variables.names.size()) {
     parser.DefineVar("t", &t);
     parser.DefineVar("u", &u);
     parser.DefineVar("v", &v);
-    for (std::size_t i = 0; i < count; ++i) parser.DefineVar(facts.names[i], &z[i]);
+    for (std::size_t i = 0; i < count; ++i) parser.DefineVar(facts.variables.names[i], &z[i]);
     parser.DefineConst("pi", std::numbers::pi);
     parser.SetExpr(facts.text);
     ++parses;  // muparser parses the text at the first Eval
@@ -89,40 +113,37 @@ Expression::Expression() = default;
 
 Expression::Expression(const char* text) : Expression(std::string(text)) {}
 
-Expression::Expression(std::string text, const std::vector<InternalVariable>& internal,
-                       std::string_view rate_of) {
+Expression::Expression(std::string text, ExpressionVariables variables, std::string_view rate_of,
+                       Compile) {
   auto facts = std::make_shared<Facts>();
   facts->text = std::move(text);
   facts->compiled = true;
-  for (std::size_t i = 0; i < internal.size() && i < kMaxInternal; ++i) {
-    facts->names.push_back(internal[i].name);
-    facts->initial[i] = internal[i].initial;
-  }
-  const Model model = with_variables(internal);
+  facts->variables = std::move(variables);
+  const std::string named = variables_named(facts->variables.names);
   const std::string& text_ = facts->text;
   if (!rate_of.empty()) {
     const std::string name(rate_of);
     const std::string what = "the rate of internal variable \"" + name + "\"";
     if (text_.find_first_not_of(" \t") == std::string::npos)
-      throw std::invalid_argument(what + " is empty; give g in " + name + "' = g(" +
-                                  variables_named(model) + ")");
+      throw std::invalid_argument(what + " is empty; give g in " + name + "' = g(" + named + ")");
     try {
-      refuse_assignment(text_, "a rate only reads " + variables_named(model));
+      refuse_assignment(text_, "a rate only reads " + named);
     } catch (const std::invalid_argument& e) {
       throw std::invalid_argument(what + ": " + e.what());
     }
     std::unique_ptr<Parser> parser;
     try {
       parser = std::make_unique<Parser>(*facts);
-      parser->z = facts->initial;
+      std::copy(facts->variables.initial.begin(), facts->variables.initial.end(),
+                parser->z.begin());
       // The first Eval parses: an unknown name or a malformed expression fails here, and the
       // values it gives are counted. Its value (at t = 0, u = v = 0) is not checked: the scene
       // reader evaluates the rates at the initial state.
       parser->parser.Eval();
       refuse_value_list(parser->parser);
     } catch (const mu::Parser::exception_type& e) {
-      throw std::invalid_argument(what + " does not parse: " + e.GetMsg() +
-                                  " (the variables are " + variables_named(model) + ")");
+      throw std::invalid_argument(what + " does not parse: " + e.GetMsg() + " (the variables are " +
+                                  named + ")");
     } catch (const std::invalid_argument& e) {
       throw std::invalid_argument(what + ": " + e.what());
     }
@@ -136,17 +157,18 @@ Expression::Expression(std::string text, const std::vector<InternalVariable>& in
                                 " are allowed");
   if (text_.find_first_not_of(" \t") == std::string::npos)
     throw std::invalid_argument("the expression is empty; give a function of t (and u, v)");
-  refuse_assignment(text_, "a force only reads " + variables_named(model));
+  refuse_assignment(text_, "a force only reads " + named);
   std::unique_ptr<Parser> parser;
   try {
     parser = std::make_unique<Parser>(*facts);
-    parser->z = facts->initial;
+    std::copy(facts->variables.initial.begin(), facts->variables.initial.end(), parser->z.begin());
     const double f0 = parser->parser.Eval();
     // muparser records the variables it read as the first Eval parses (GetUsedVar parses again,
     // and so does the next Eval).
     const auto& used = parser->parser.GetUsedVar();
     facts->state = used.count("u") > 0 || used.count("v") > 0;
-    for (const std::string& name : facts->names) facts->state = facts->state || used.count(name) > 0;
+    for (const std::string& name : facts->variables.names)
+      facts->state = facts->state || used.count(name) > 0;
     refuse_value_list(parser->parser);
     // A force of t alone must be finite where every run starts; one of the state is probed at
     // the scene's initial state by the scene reader (check_force), and elsewhere where the run
@@ -166,10 +188,9 @@ Expression::Expression(std::string text, const std::vector<InternalVariable>& in
       throw std::invalid_argument("the expression uses \"" + e.GetToken() + "\"" + at +
                                   ", which is no variable or function muparser knows (the "
                                   "variables are " +
-                                  variables_named(model) + "; pi is defined)");
+                                  named + "; pi is defined)");
     throw std::invalid_argument("the expression does not parse" + at + ": " + e.GetMsg() +
-                                " (the variables are " + variables_named(model) +
-                                "; pi is defined)");
+                                " (the variables are " + named + "; pi is defined)");
   }
   facts_ = std::move(facts);
   parser_ = std::move(parser);
@@ -199,15 +220,10 @@ bool Expression::is_compiled() const {
   return facts_ && facts_->compiled;
 }
 
-Expression Expression::compiled(const std::vector<InternalVariable>& internal,
-                                std::string_view rate_of) const {
-  if (is_compiled() && facts_->names.size() == std::min(internal.size(), kMaxInternal)) {
-    bool same = true;
-    for (std::size_t i = 0; i < facts_->names.size(); ++i)
-      same = same && facts_->names[i] == internal[i].name;
-    if (same) return *this;
-  }
-  return Expression(text(), internal, rate_of);
+Expression Expression::compiled(const ExpressionVariables& variables, std::string_view rate_of,
+                                Compile) const {
+  if (is_compiled() && facts_->variables.names == variables.names) return *this;
+  return Expression(text(), variables, rate_of, Compile{});
 }
 
 bool Expression::reads_state() const {
@@ -236,6 +252,14 @@ double Expression::operator()(double t, double u, double v, const double* z) con
   p.v = v;
   for (std::size_t i = 0; i < p.count; ++i) p.z[i] = z[i];
   return p.eval();
+}
+
+std::string variables_named(const std::vector<std::string>& names) {
+  if (names.empty()) return "t, u and v";
+  std::string listed;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    listed += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
+  return "t, u, v and the internal variable" + std::string(names.size() > 1 ? "s " : " ") + listed;
 }
 
 std::size_t expression_parses() {

@@ -16,14 +16,37 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace impact {
 
-struct InternalVariable;
-
 // The longest expression a scene may give (characters).
 inline constexpr std::size_t kMaxExpressionLength = 4096;
+
+// The most internal variables a model may have (model.hpp): a state carries them in a fixed
+// array, so that a step copies no heap memory.
+inline constexpr std::size_t kMaxInternal = 4;
+
+// The internal variables as an expression reads them: the names (z[i] of an evaluation is
+// names[i]) and the values at t = 0, at which a force is checked when it is compiled.
+struct ExpressionVariables {
+  std::vector<std::string> names;
+  std::vector<double> initial;
+};
+// The first kMaxInternal of a model's internal variables (anything with .name and .initial).
+template <class Internal>
+ExpressionVariables variables_of(const Internal& internal) {
+  ExpressionVariables variables;
+  for (const auto& z : internal) {
+    if (variables.names.size() == kMaxInternal) break;
+    variables.names.push_back(z.name);
+    variables.initial.push_back(z.initial);
+  }
+  return variables;
+}
+// "t, u and v", or "t, u, v and the internal variables beta, D", for messages.
+std::string variables_named(const std::vector<std::string>& names);
 
 class Expression {
  public:
@@ -36,8 +59,9 @@ class Expression {
   // internal variables', gives several comma-separated values, or (a force of t alone) is not
   // finite at t = 0, u = v = 0. `rate_of` names the internal variable whose rate this is (its
   // messages say so, and a rate's value at t = 0 is not checked); empty for a force.
-  Expression(std::string text, const std::vector<InternalVariable>& internal,
-             std::string_view rate_of = {});
+  template <class Internal>
+  Expression(std::string text, const Internal& internal, std::string_view rate_of = {})
+      : Expression(std::move(text), variables_of(internal), rate_of, Compile{}) {}
   Expression(const Expression& other);
   Expression& operator=(const Expression& other);
   Expression(Expression&&) noexcept;
@@ -49,8 +73,10 @@ class Expression {
   bool is_compiled() const;
   // This expression compiled for these internal variables: a copy of it if it is (no parse),
   // else a new compilation of its text (as the constructor above).
-  Expression compiled(const std::vector<InternalVariable>& internal,
-                      std::string_view rate_of = {}) const;
+  template <class Internal>
+  Expression compiled(const Internal& internal, std::string_view rate_of = {}) const {
+    return compiled(variables_of(internal), rate_of, Compile{});
+  }
   // Whether the expression reads u, v or an internal variable (compiled; false for none).
   bool reads_state() const;
 
@@ -65,10 +91,14 @@ class Expression {
   bool operator==(const char* other) const { return text() == other; }
 
  private:
+  struct Compile {};
+  Expression(std::string text, ExpressionVariables variables, std::string_view rate_of, Compile);
+  Expression compiled(const ExpressionVariables& variables, std::string_view rate_of,
+                      Compile) const;
   struct Facts;
   struct Parser;
   Parser& parser() const;
-  std::shared_ptr<const Facts> facts_;     // shared by the copies
+  std::shared_ptr<const Facts> facts_;      // shared by the copies
   mutable std::unique_ptr<Parser> parser_;  // this copy's own, made at its first evaluation
 };
 

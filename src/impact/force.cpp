@@ -35,9 +35,8 @@ double checked(double t, const Eval& eval) {
                              e.what());
   }
   if (!std::isfinite(value))
-    throw std::runtime_error("the force expression is " + round_trip(value) +
-                             " at t = " + round_trip(t) +
-                             "; it must be finite wherever the run evaluates it");
+    throw std::runtime_error("the force expression is " + round_trip(value) + " at t = " +
+                             round_trip(t) + "; it must be finite wherever the run evaluates it");
   return value;
 }
 
@@ -80,9 +79,10 @@ double ForceFunction::integral(double t0, double t1) const {
   // cos(a) - cos(b) = 2 sin((a + b)/2) sin((b - a)/2), without cancellation for short steps.
   if (harmonic_) value += harmonic_integral(*harmonic_, t0, t1);
   if (!model_.expression.empty()) {
-    const Integrand f{
-        [](double t, void* self) { return static_cast<const ForceFunction*>(self)->expression_at(t); },
-        const_cast<ForceFunction*>(this)};
+    const Integrand f{[](double t, void* self) {
+                        return static_cast<const ForceFunction*>(self)->expression_at(t);
+                      },
+                      const_cast<ForceFunction*>(this)};
     value += controlled_integral(f, t0, t1);
   }
   return value;

@@ -84,8 +84,7 @@ class ForceFunction {
 // A force expression's value at t and the state s with the internal variables z[0..m) (the scene
 // reader's probe at the initial state); std::runtime_error naming t where it fails or is not
 // finite, as ForceFunction::at.
-double force_expression_at(const Expression& expression, double t, const State& s,
-                           const double* z);
+double force_expression_at(const Expression& expression, double t, const State& s, const double* z);
 
 // The model with its linear part (Model::linear), its constant part f and its harmonic part
 // written as the one expression of the state they make, f - k * (u - u_eq) - c * v + amplitude *

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <numbers>
 #include <stdexcept>
 #include <string_view>
 
@@ -25,26 +24,8 @@ bool identifier(const std::string& name) {
 
 }  // namespace
 
-void define_variables(mu::Parser& parser, double& t, double& u, double& v, const Model& model,
-                      double* z) {
-  parser.DefineVar("t", &t);
-  parser.DefineVar("u", &u);
-  parser.DefineVar("v", &v);
-  for (std::size_t i = 0; i < model.internal.size() && i < kMaxInternal; ++i)
-    parser.DefineVar(model.internal[i].name, &z[i]);
-  parser.DefineConst("pi", std::numbers::pi);
-}
-
 std::string variables_named(const Model& model) {
-  if (model.internal.empty()) return "t, u and v";
-  std::string names;
-  for (std::size_t i = 0; i < model.internal.size(); ++i)
-    names += (i == 0                           ? ""
-              : i + 1 == model.internal.size() ? " and "
-                                               : ", ") +
-             model.internal[i].name;
-  return "t, u, v and the internal variable" + std::string(model.internal.size() > 1 ? "s " : " ") +
-         names;
+  return variables_named(variables_of(model.internal).names);
 }
 
 void check_internal_variables(const Model& model) {
@@ -79,34 +60,6 @@ void check_internal_variables(const Model& model) {
       throw std::invalid_argument(quoted + ": the initial value " + round_trip(z.initial) +
                                   " must be finite");
   }
-}
-
-void refuse_assignment(const std::string& text, const std::string& reads) {
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    if (text[i] != '=') continue;
-    const bool comparison =
-        (i > 0 && std::string_view("=!<>").find(text[i - 1]) != std::string_view::npos) ||
-        (i + 1 < text.size() && text[i + 1] == '=');
-    if (comparison) continue;
-    // The name assigned to: the word before the '=' (or the operator, "+=").
-    std::size_t end = i;
-    if (end > 0 && std::string_view("+-*/").find(text[end - 1]) != std::string_view::npos) --end;
-    while (end > 0 && text[end - 1] == ' ') --end;
-    std::size_t start = end;
-    while (start > 0 &&
-           (std::isalnum(static_cast<unsigned char>(text[start - 1])) || text[start - 1] == '_'))
-      --start;
-    const std::string name = start < end ? text.substr(start, end - start) : "a value";
-    throw std::invalid_argument("the expression assigns to " + name + " with '=' at position " +
-                                std::to_string(i + 1) + "; " + reads + " (to compare, write '==')");
-  }
-}
-
-void refuse_value_list(mu::Parser& parser) {
-  if (const int values = parser.GetNumResults(); values > 1)
-    throw std::invalid_argument("the expression has " + std::to_string(values) +
-                                " values separated by commas, of which muparser would keep the "
-                                "last; give one (a comma only separates arguments)");
 }
 
 InternalRates::InternalRates(const Model& model) : model_(model), count_(model.internal.size()) {

@@ -9,16 +9,8 @@
 
 #include "impact/model.hpp"
 
-namespace mu {
-class Parser;
-}
-
 namespace impact {
 
-// Binds t, u, v, the model's internal variables (z[i] for model.internal[i]) and the constant pi
-// in `parser` by address: what a force expression and a rate may read.
-void define_variables(mu::Parser& parser, double& t, double& u, double& v, const Model& model,
-                      double* z);
 // "t, u and v", or "t, u, v and the internal variables beta, D", for messages.
 std::string variables_named(const Model& model);
 
@@ -28,16 +20,6 @@ std::string variables_named(const Model& model);
 // the CSV headers would then show twice or mislabel: N, E, iterations, N_scheme, kind, v_before,
 // v_after), a name given twice, or a non-finite initial value.
 void check_internal_variables(const Model& model);
-
-// What a force expression and a rate may not be, checked on the text before muparser sees it:
-// an assignment with '=' (muparser's "t = 1" sets t; "+=", "-=", ... too), which would change a
-// variable that the force and the other rates read. Throws std::invalid_argument naming what is
-// assigned and the position; `reads` says what the expression may read ("a force only reads t,
-// u and v").
-void refuse_assignment(const std::string& text, const std::string& reads);
-// After the first Eval: several comma-separated values ("1,2"), of which muparser keeps the last.
-// Throws std::invalid_argument.
-void refuse_value_list(mu::Parser& parser);
 
 // The rates g_i of the model's internal variables, evaluated at (t, state, z).
 class InternalRates {

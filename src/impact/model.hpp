@@ -59,9 +59,7 @@ struct InternalVariable {
   bool operator==(const InternalVariable&) const = default;
 };
 
-// The most internal variables a model may have: a state carries them in a fixed array, so that
-// a step copies no heap memory.
-inline constexpr std::size_t kMaxInternal = 4;
+// The most internal variables a model may have: kMaxInternal (expression.hpp).
 
 // The body force of (2-1): f(t) = f + amplitude sin(omega t + phase) + expression(t), each part
 // optional (the scene reader lets a scene give either the harmonic part or an expression).
