@@ -49,7 +49,7 @@ std::uint64_t bits(double x) {
 
 TEST_CASE("expression: reading a scene parses its force once, and each evaluating copy once more",
           "[expression]") {
-  for (const std::string expression : {kState, std::string("-9.80665 + 4 * sin(2 * t)")}) {
+  for (const std::string& expression : {kState, std::string("-9.80665 + 4 * sin(2 * t)")}) {
     INFO(expression);
     Scene scene;
     CHECK(parses_of([&] { scene = parse_scene(scene_text(expression, "direct"), "s.toml"); }) == 1);

@@ -20,6 +20,9 @@ ForceFunction::ForceFunction(const Model& model)
     model_.expression = model_.expression.compiled(model_.internal);
     state_dependent_ = model_.expression.reads_state();
   }
+  // Until a stepper sets them, the internal variables are at their values at t = 0.
+  for (std::size_t i = 0; i < model_.internal.size() && i < kMaxInternal; ++i)
+    z_[i] = model_.internal[i].initial;
 }
 
 namespace {
