@@ -240,13 +240,13 @@ Expression::Parser& Expression::parser() const {
 }
 
 double Expression::operator()(double t) const {
-  Parser& p = parser();
+  Parser& p = parser_ ? *parser_ : parser();  // made at the first evaluation
   p.t = t;
   return p.eval();
 }
 
 double Expression::operator()(double t, double u, double v, const double* z) const {
-  Parser& p = parser();
+  Parser& p = parser_ ? *parser_ : parser();  // made at the first evaluation
   p.t = t;
   p.u = u;
   p.v = v;
