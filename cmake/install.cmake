@@ -14,6 +14,7 @@ set(IMPACT_PUBLIC_HEADERS
   chain_moreau_jean.hpp chain_reference.hpp channels.hpp
   contact.hpp contact_law.hpp direct.hpp direct_located.hpp ensemble.hpp
   error_norms.hpp event.hpp event_driven.hpp exact.hpp exact_bonded.hpp exact_march.hpp
+  expression.hpp
   fb_newton.hpp flight_search.hpp force.hpp format.hpp free_flight.hpp harmonic_series.hpp
   heap_value.hpp
   internal.hpp internal_floor.hpp internal_stepper.hpp linear_flight.hpp linear_law.hpp

@@ -113,7 +113,8 @@ TEST_CASE("force: an expression that is empty, too long or not evaluable at t = 
   std::string sum = "t";
   while (sum.size() < 4095) sum += "+t";
   REQUIRE(sum.size() == 4095);
-  CHECK(parse(kBase + "[force]\nexpression = \"" + sum + " \"\n").model.expression.size() == 4096);
+  CHECK(parse(kBase + "[force]\nexpression = \"" + sum + " \"\n").model.expression.text().size() ==
+        4096);
   const std::string message = scene_error(kBase + "[force]\nexpression = \"" + sum + "+t\"\n");
   CHECK_THAT(message, Contains("force.expression = 't+t+t") &&
                           Contains("has 4097 characters; at most 4096 are allowed"));

@@ -93,8 +93,7 @@ Model oscillator(double phi, bool drive) {
   Model model;
   model.phi = phi;
   model.cor = kCor;
-  model.expression = "-9.80665 - 50 * " + gap(phi);
-  if (drive) model.expression += " - 0.5 * v + 15 * sin(8 * t)";
+  model.expression = "-9.80665 - 50 * " + gap(phi) + (drive ? " - 0.5 * v + 15 * sin(8 * t)" : "");
   return model;
 }
 
@@ -104,7 +103,7 @@ Model oscillator(double phi, bool drive) {
 // 0.49, at 3.310 s): the rates and the force are read on the floor as in flight.
 Model with_memory(double phi) {
   Model model = oscillator(phi, false);
-  model.expression += " + 20 * z";
+  model.expression = model.expression.text() + " + 20 * z";
   model.internal = {{"z", -1.0, "1 - 4 * " + gap(phi)}};
   return model;
 }

@@ -74,8 +74,9 @@ TEST_CASE(
     model.cor = in(0.5, 0.95);
     const State initial{model.phi + in(0.1, 1.5), in(-1, 1)};
     const double T = 8.0, h = 0.01;
-    INFO("scene " << i << ": " << linear_as_expression(model).expression << ", phi = " << model.phi
-                  << ", COR " << *model.cor << ", u0 = " << initial.u << ", v0 = " << initial.v);
+    INFO("scene " << i << ": " << linear_as_expression(model).expression.text()
+                  << ", phi = " << model.phi << ", COR " << *model.cor << ", u0 = " << initial.u
+                  << ", v0 = " << initial.v);
     const MethodRun a = run_method(model, initial, T, h, ExactParams{});
     const MethodRun b = run_method(model, initial, T, h, EventDrivenParams{});
     // Every event up to the first stick: a chatter is cut off under a window each certifies in

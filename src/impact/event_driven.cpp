@@ -26,7 +26,9 @@ EventDriven::EventDriven(const Model& model, double h, const EventDrivenParams& 
   if (params.max_events < 0 || params.max_ode_steps < 0)
     throw std::invalid_argument(
         "method 'event_driven': max_events and max_ode_steps must be >= 0 (0: automatic)");
-  const ForceFunction parses(model);  // an expression that does not parse fails here, not later
+  // An expression not yet compiled (a model built in code) that does not parse fails here, not
+  // later; one the scene reader compiled is not parsed again.
+  const ForceFunction parses(model);
 }
 
 void EventDriven::initialize(const State& s, std::int64_t l) {

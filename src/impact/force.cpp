@@ -1,7 +1,5 @@
 #include "impact/force.hpp"
 
-#include <muParser.h>
-
 #include <array>
 #include <cctype>
 #include <cmath>
@@ -16,147 +14,56 @@
 
 namespace impact {
 
+ForceFunction::ForceFunction(const Model& model)
+    : model_(linear_as_expression(model)), harmonic_(model_.harmonic) {
+  if (!model_.expression.empty()) {
+    model_.expression = model_.expression.compiled(model_.internal);
+    state_dependent_ = model_.expression.reads_state();
+  }
+  // Until a stepper sets them, the internal variables are at their values at t = 0.
+  for (std::size_t i = 0; i < model_.internal.size() && i < kMaxInternal; ++i)
+    z_[i] = model_.internal[i].initial;
+}
+
 namespace {
 
-// A token muparser could not read that starts as a number does ("9.8e", "2.5e+").
-bool starts_number(const std::string& token) {
-  return !token.empty() && (std::isdigit(static_cast<unsigned char>(token[0])) || token[0] == '.');
-}
-
-// The number that starts at `position` of the text: digits, '.', an exponent and its sign.
-std::string number_at(const std::string& text, std::size_t position) {
-  std::size_t end = position;
-  while (end < text.size()) {
-    const char c = text[end];
-    const bool sign =
-        (c == '+' || c == '-') && end > position && (text[end - 1] == 'e' || text[end - 1] == 'E');
-    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '.' || sign)) break;
-    ++end;
+// eval() at t, with what fails or is not finite named as a force expression's.
+template <class Eval>
+double checked(double t, const Eval& eval) {
+  double value;
+  try {
+    value = eval();
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error("the force expression fails at t = " + round_trip(t) + ": " +
+                             e.what());
   }
-  return text.substr(position, end - position);
-}
-
-// After the first Eval, which parses the expression and records the variables it uses: u, v or
-// an internal variable.
-bool reads_state(const mu::Parser& parser, const Model& model) {
-  const auto& used = parser.GetUsedVar();
-  if (used.count("u") > 0 || used.count("v") > 0) return true;
-  for (const InternalVariable& z : model.internal)
-    if (used.count(z.name) > 0) return true;
-  return false;
+  if (!std::isfinite(value))
+    throw std::runtime_error("the force expression is " + round_trip(value) + " at t = " +
+                             round_trip(t) + "; it must be finite wherever the run evaluates it");
+  return value;
 }
 
 }  // namespace
 
-// The parser binds t, u, v and the internal variables by address, so each ForceFunction owns its
-// parser and its variables.
-struct ForceFunction::Expression {
-  Expression(const std::string& expression, const Model& model) : text(expression) {
-    if (text.size() > kMaxExpressionLength)
-      throw std::invalid_argument("the expression has " + std::to_string(text.size()) +
-                                  " characters; at most " + std::to_string(kMaxExpressionLength) +
-                                  " are allowed");
-    if (text.find_first_not_of(" \t") == std::string::npos)
-      throw std::invalid_argument("the expression is empty; give a function of t (and u, v)");
-    refuse_assignment(text, "a force only reads " + variables_named(model));
-    try {
-      define_variables(parser, t, u, v, model, z.data());
-      parser.SetExpr(text);
-      t = u = v = 0.0;
-      for (std::size_t i = 0; i < model.internal.size() && i < kMaxInternal; ++i)
-        z[i] = model.internal[i].initial;
-      const double f0 = parser.Eval();
-      state =
-          reads_state(parser, model);  // muparser records the variables as the first Eval parses
-      refuse_value_list(parser);
-      // A force of t alone must be finite where every run starts; one of the state is probed at
-      // the scene's initial state by the scene reader (check_force), and elsewhere where the run
-      // evaluates it.
-      if (!std::isfinite(f0) && !state)
-        throw std::invalid_argument("the expression is " + round_trip(f0) +
-                                    " at t = 0; it must be finite");
-    } catch (const mu::Parser::exception_type& e) {
-      // Positions are counted from 1 here; muparser's own message counts from 0, so it is left
-      // out where the position is all it adds.
-      const std::string at = " at position " + std::to_string(e.GetPos() + 1);
-      if (e.GetCode() == mu::ecUNASSIGNABLE_TOKEN && starts_number(e.GetToken()))
-        throw std::invalid_argument("the number \"" + number_at(text, e.GetPos()) + "\"" + at +
-                                    " is malformed (a number is digits with an optional fraction "
-                                    "and exponent, as 9.8, .5 or 2.5e-3)");
-      if (e.GetCode() == mu::ecUNASSIGNABLE_TOKEN)
-        throw std::invalid_argument("the expression uses \"" + e.GetToken() + "\"" + at +
-                                    ", which is no variable or function muparser knows (the "
-                                    "variables are " +
-                                    variables_named(model) + "; pi is defined)");
-      throw std::invalid_argument("the expression does not parse" + at + ": " + e.GetMsg() +
-                                  " (the variables are " + variables_named(model) +
-                                  "; pi is defined)");
-    }
-  }
-  double operator()(double at) const {
-    t = at;
-    return evaluate();
-  }
-  double operator()(double at, const State& s) const {
-    t = at;
-    u = s.u;
-    v = s.v;
-    return evaluate();
-  }
-  double evaluate() const {
-    const double at = t;
-    double value;
-    try {
-      value = parser.Eval();
-    } catch (const mu::Parser::exception_type& e) {
-      throw std::runtime_error("the force expression fails at t = " + round_trip(at) + ": " +
-                               e.GetMsg());
-    }
-    if (!std::isfinite(value))
-      throw std::runtime_error("the force expression is " + round_trip(value) +
-                               " at t = " + round_trip(at) +
-                               "; it must be finite wherever the run evaluates it");
-    return value;
-  }
-
-  std::string text;
-  mutable double t = 0.0, u = 0.0, v = 0.0;
-  mutable std::array<double, kMaxInternal> z{};  // the internal variables, set_internal()
-  bool state = false;  // the expression reads u, v or an internal variable
-  mu::Parser parser;
-};
-
-ForceFunction::ForceFunction(const Model& model)
-    : model_(linear_as_expression(model)), harmonic_(model_.harmonic) {
-  if (!model_.expression.empty()) {
-    expression_ = std::make_unique<Expression>(model_.expression, model_);
-    state_dependent_ = expression_->state;
-  }
+double force_expression_at(const Expression& expression, double t, const State& s,
+                           const double* z) {
+  return checked(t, [&] { return expression(t, s.u, s.v, z); });
 }
 
-ForceFunction::ForceFunction(const ForceFunction& other)
-    : model_(other.model_), harmonic_(other.harmonic_), state_dependent_(other.state_dependent_) {
-  if (other.expression_) {
-    expression_ = std::make_unique<Expression>(other.expression_->text, model_);
-    expression_->z = other.expression_->z;
-  }
+double ForceFunction::expression_at(double t) const {
+  return checked(t, [&] { return model_.expression(t); });
 }
 
-ForceFunction& ForceFunction::operator=(const ForceFunction& other) {
-  if (this != &other) *this = ForceFunction(other);
-  return *this;
+double ForceFunction::expression_at(double t, const State& s) const {
+  return force_expression_at(model_.expression, t, s, z_.data());
 }
-
-ForceFunction::ForceFunction(ForceFunction&&) noexcept = default;
-ForceFunction& ForceFunction::operator=(ForceFunction&&) noexcept = default;
-ForceFunction::~ForceFunction() = default;
 
 double ForceFunction::at(double t) const {
   if (state_dependent_)
     throw std::logic_error("ForceFunction::at(t): the force reads u or v; give the state");
   double value = model_.f;
   if (harmonic_) value += harmonic_->amplitude * std::sin(harmonic_->omega * t + harmonic_->phase);
-  if (expression_) value += (*expression_)(t);
+  if (!model_.expression.empty()) value += expression_at(t);
   return value;
 }
 
@@ -164,7 +71,7 @@ double ForceFunction::at(double t, const State& s) const {
   if (!state_dependent_) return at(t);
   // An expression of the state is the whole force (the reader refuses f and a harmonic part
   // beside an expression), so f and the harmonic part are zero here.
-  return model_.f + (*expression_)(t, s);
+  return model_.f + expression_at(t, s);
 }
 
 double ForceFunction::integral(double t0, double t1) const {
@@ -174,10 +81,11 @@ double ForceFunction::integral(double t0, double t1) const {
   double value = model_.f * (t1 - t0);
   // cos(a) - cos(b) = 2 sin((a + b)/2) sin((b - a)/2), without cancellation for short steps.
   if (harmonic_) value += harmonic_integral(*harmonic_, t0, t1);
-  if (expression_) {
-    const Integrand f{
-        [](double t, void* self) { return (*static_cast<const Expression*>(self))(t); },
-        expression_.get()};
+  if (!model_.expression.empty()) {
+    const Integrand f{[](double t, void* self) {
+                        return static_cast<const ForceFunction*>(self)->expression_at(t);
+                      },
+                      const_cast<ForceFunction*>(this)};
     value += controlled_integral(f, t0, t1);
   }
   return value;
@@ -186,12 +94,12 @@ double ForceFunction::integral(double t0, double t1) const {
 double ForceFunction::integral(double t0, double t1, const State& s) const {
   if (!state_dependent_) return integral(t0, t1);
   struct Frozen {
-    const Expression* expression;
+    const ForceFunction* force;
     State s;
-  } frozen{expression_.get(), s};
+  } frozen{this, s};
   const Integrand f{[](double t, void* self) {
                       const auto* at = static_cast<const Frozen*>(self);
-                      return (*at->expression)(t, at->s);
+                      return at->force->expression_at(t, at->s);
                     },
                     &frozen};
   return model_.f * (t1 - t0) + controlled_integral(f, t0, t1);
@@ -208,7 +116,7 @@ double ForceFunction::step_mean(double t0, double h, const State& s) const {
 }
 
 State ForceFunction::flight(const State& s, double t0, double t1) const {
-  if (expression_)
+  if (!model_.expression.empty())
     throw std::logic_error("ForceFunction::flight: an expression force has no closed form");
   const double dt = t1 - t0;
   State next{s.u + dt * (s.v + dt * model_.f / 2), s.v + dt * model_.f};
@@ -235,7 +143,7 @@ State ForceFunction::flight(const State& s, double t0, double t1) const {
 }
 
 void ForceFunction::set_internal(const std::array<double, kMaxInternal>& z) const {
-  if (expression_) expression_->z = z;
+  z_ = z;
 }
 
 Model linear_as_expression(const Model& model) {
@@ -270,20 +178,14 @@ bool state_force(const Model& model) {
   if (model.linear) return true;
   if (model.expression.empty()) return false;
   try {
-    mu::Parser parser;
-    double t = 0, u = 0, v = 0;
-    std::array<double, kMaxInternal> z{};
-    define_variables(parser, t, u, v, model, z.data());
-    parser.SetExpr(model.expression);
-    parser.Eval();
-    return reads_state(parser, model);
-  } catch (const mu::Parser::exception_type&) {
+    return model.expression.compiled(model.internal).reads_state();
+  } catch (const std::invalid_argument&) {
     return false;
   }
 }
 
 std::optional<double> ForceFunction::bound() const {
-  if (expression_) return std::nullopt;
+  if (!model_.expression.empty()) return std::nullopt;
   return std::fabs(model_.f) + (harmonic_ ? std::fabs(harmonic_->amplitude) : 0.0);
 }
 

@@ -21,7 +21,6 @@
 #pragma once
 
 #include <array>
-#include <memory>
 #include <optional>
 #include <string>
 
@@ -29,22 +28,16 @@
 
 namespace impact {
 
-// The longest expression a scene may give (characters).
-inline constexpr std::size_t kMaxExpressionLength = 4096;
-
 class ForceFunction {
  public:
   // Throws std::invalid_argument for an expression that is empty, too long, does not parse (the
   // message gives the position), uses a variable other than t, u and v, or is not finite at
   // t = 0, u = v = 0.
+  // A model's expression compiled by the scene reader is not parsed again (its copy here parses
+  // once more, at its first evaluation: expression.hpp).
   explicit ForceFunction(const Model& model);
-  ForceFunction(const ForceFunction& other);
-  ForceFunction& operator=(const ForceFunction& other);
-  ForceFunction(ForceFunction&&) noexcept;
-  ForceFunction& operator=(ForceFunction&&) noexcept;
-  ~ForceFunction();
 
-  bool constant() const { return !harmonic_ && !expression_; }
+  bool constant() const { return !harmonic_ && model_.expression.empty(); }
   // Whether the expression reads u, v or an internal variable: a force of the state.
   bool state_dependent() const { return state_dependent_; }
   // The internal variables the expression reads from now on (z_1..z_m of the model, the rest 0).
@@ -79,12 +72,19 @@ class ForceFunction {
   const Model& model() const { return model_; }
 
  private:
-  struct Expression;
-  Model model_;
+  // The expression's value at t (and s), std::runtime_error where it fails or is not finite.
+  double expression_at(double t) const;
+  double expression_at(double t, const State& s) const;
+  Model model_;  // its expression compiled, evaluated through this copy's own parser
   std::optional<Harmonic> harmonic_;
-  std::unique_ptr<Expression> expression_;
   bool state_dependent_ = false;
+  mutable std::array<double, kMaxInternal> z_{};  // set_internal()
 };
+
+// A force expression's value at t and the state s with the internal variables z[0..m) (the scene
+// reader's probe at the initial state); std::runtime_error naming t where it fails or is not
+// finite, as ForceFunction::at.
+double force_expression_at(const Expression& expression, double t, const State& s, const double* z);
 
 // The model with its linear part (Model::linear), its constant part f and its harmonic part
 // written as the one expression of the state they make, f - k * (u - u_eq) - c * v + amplitude *
@@ -94,7 +94,7 @@ Model linear_as_expression(const Model& model);
 
 // Whether a model's force reads u, v or an internal variable: a linear part, or an expression that
 // does (false for none, or for one that does not parse: the scene reader refuses that with its own
-// message).
+// message). An expression compiled by the reader is not parsed again.
 bool state_force(const Model& model);
 
 }  // namespace impact

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <numbers>
 #include <stdexcept>
 #include <string_view>
 
@@ -25,26 +24,8 @@ bool identifier(const std::string& name) {
 
 }  // namespace
 
-void define_variables(mu::Parser& parser, double& t, double& u, double& v, const Model& model,
-                      double* z) {
-  parser.DefineVar("t", &t);
-  parser.DefineVar("u", &u);
-  parser.DefineVar("v", &v);
-  for (std::size_t i = 0; i < model.internal.size() && i < kMaxInternal; ++i)
-    parser.DefineVar(model.internal[i].name, &z[i]);
-  parser.DefineConst("pi", std::numbers::pi);
-}
-
 std::string variables_named(const Model& model) {
-  if (model.internal.empty()) return "t, u and v";
-  std::string names;
-  for (std::size_t i = 0; i < model.internal.size(); ++i)
-    names += (i == 0                           ? ""
-              : i + 1 == model.internal.size() ? " and "
-                                               : ", ") +
-             model.internal[i].name;
-  return "t, u, v and the internal variable" + std::string(model.internal.size() > 1 ? "s " : " ") +
-         names;
+  return variables_named(variables_of(model.internal).names);
 }
 
 void check_internal_variables(const Model& model) {
@@ -81,108 +62,24 @@ void check_internal_variables(const Model& model) {
   }
 }
 
-void refuse_assignment(const std::string& text, const std::string& reads) {
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    if (text[i] != '=') continue;
-    const bool comparison =
-        (i > 0 && std::string_view("=!<>").find(text[i - 1]) != std::string_view::npos) ||
-        (i + 1 < text.size() && text[i + 1] == '=');
-    if (comparison) continue;
-    // The name assigned to: the word before the '=' (or the operator, "+=").
-    std::size_t end = i;
-    if (end > 0 && std::string_view("+-*/").find(text[end - 1]) != std::string_view::npos) --end;
-    while (end > 0 && text[end - 1] == ' ') --end;
-    std::size_t start = end;
-    while (start > 0 &&
-           (std::isalnum(static_cast<unsigned char>(text[start - 1])) || text[start - 1] == '_'))
-      --start;
-    const std::string name = start < end ? text.substr(start, end - start) : "a value";
-    throw std::invalid_argument("the expression assigns to " + name + " with '=' at position " +
-                                std::to_string(i + 1) + "; " + reads + " (to compare, write '==')");
-  }
-}
-
-void refuse_value_list(mu::Parser& parser) {
-  if (const int values = parser.GetNumResults(); values > 1)
-    throw std::invalid_argument("the expression has " + std::to_string(values) +
-                                " values separated by commas, of which muparser would keep the "
-                                "last; give one (a comma only separates arguments)");
-}
-
-// One parser per rate, all bound to the same variables.
-struct InternalRates::Parsers {
-  explicit Parsers(const Model& model) : rates(model.internal.size()) {
-    for (std::size_t i = 0; i < rates.size(); ++i) {
-      const InternalVariable& variable = model.internal[i];
-      const std::string what = "the rate of internal variable \"" + variable.name + "\"";
-      if (variable.rate.find_first_not_of(" \t") == std::string::npos)
-        throw std::invalid_argument(what + " is empty; give g in " + variable.name + "' = g(" +
-                                    variables_named(model) + ")");
-      try {
-        refuse_assignment(variable.rate, "a rate only reads " + variables_named(model));
-      } catch (const std::invalid_argument& e) {
-        throw std::invalid_argument(what + ": " + e.what());
-      }
-      z = with_internal(model, {}).z;
-      try {
-        define_variables(rates[i], t, u, v, model, z.data());
-        rates[i].SetExpr(variable.rate);
-        // The first Eval parses: an unknown name or a malformed expression fails here, and the
-        // values it gives are counted. Its value (at t = 0, u = v = 0) is not checked: the scene
-        // reader evaluates the rates at the initial state.
-        rates[i].Eval();
-        refuse_value_list(rates[i]);
-      } catch (const mu::Parser::exception_type& e) {
-        throw std::invalid_argument(what + " does not parse: " + e.GetMsg() +
-                                    " (the variables are " + variables_named(model) + ")");
-      } catch (const std::invalid_argument& e) {
-        throw std::invalid_argument(what + ": " + e.what());
-      }
-    }
-  }
-  std::vector<mu::Parser> rates;
-  double t = 0.0, u = 0.0, v = 0.0;
-  std::array<double, kMaxInternal> z{};
-};
-
-InternalRates::InternalRates(const Model& model)
-    : model_(model), count_(model.internal.size()), parsers_() {
+InternalRates::InternalRates(const Model& model) : model_(model), count_(model.internal.size()) {
   check_internal_variables(model);
-  parsers_ = std::make_unique<Parsers>(model_);
+  for (InternalVariable& z : model_.internal) z.rate = z.rate.compiled(model_.internal, z.name);
 }
-
-InternalRates::InternalRates(const InternalRates& other)
-    : model_(other.model_),
-      count_(other.count_),
-      parsers_(std::make_unique<Parsers>(other.model_)) {}
-
-InternalRates& InternalRates::operator=(const InternalRates& other) {
-  if (this != &other) *this = InternalRates(other);
-  return *this;
-}
-
-InternalRates::InternalRates(InternalRates&&) noexcept = default;
-InternalRates& InternalRates::operator=(InternalRates&&) noexcept = default;
-InternalRates::~InternalRates() = default;
 
 void InternalRates::evaluate(double t, const StateWithInternal& s,
                              std::array<double, kMaxInternal>& rate) const {
-  Parsers& p = *parsers_;
-  p.t = t;
-  p.u = s.u;
-  p.v = s.v;
-  p.z = s.z;
   for (std::size_t i = 0; i < count_; ++i) {
-    const std::string& name = model_.internal[i].name;
+    const InternalVariable& z = model_.internal[i];
     try {
-      rate[i] = p.rates[i].Eval();
-    } catch (const mu::Parser::exception_type& e) {
-      throw std::runtime_error("the rate of internal variable \"" + name +
-                               "\" fails at t = " + round_trip(t) + ": " + e.GetMsg() +
+      rate[i] = z.rate(t, s.u, s.v, s.z.data());
+    } catch (const std::runtime_error& e) {
+      throw std::runtime_error("the rate of internal variable \"" + z.name +
+                               "\" fails at t = " + round_trip(t) + ": " + e.what() +
                                " (the variables are " + variables_named(model_) + ")");
     }
     if (!std::isfinite(rate[i]))
-      throw std::runtime_error("the rate of internal variable \"" + name + "\" is " +
+      throw std::runtime_error("the rate of internal variable \"" + z.name + "\" is " +
                                round_trip(rate[i]) + " at t = " + round_trip(t) +
                                "; it must be finite wherever the run evaluates it");
   }

@@ -4,22 +4,13 @@
 #pragma once
 
 #include <array>
-#include <memory>
 #include <string>
 #include <vector>
 
 #include "impact/model.hpp"
 
-namespace mu {
-class Parser;
-}
-
 namespace impact {
 
-// Binds t, u, v, the model's internal variables (z[i] for model.internal[i]) and the constant pi
-// in `parser` by address: what a force expression and a rate may read.
-void define_variables(mu::Parser& parser, double& t, double& u, double& v, const Model& model,
-                      double* z);
 // "t, u and v", or "t, u, v and the internal variables beta, D", for messages.
 std::string variables_named(const Model& model);
 
@@ -30,16 +21,6 @@ std::string variables_named(const Model& model);
 // v_after), a name given twice, or a non-finite initial value.
 void check_internal_variables(const Model& model);
 
-// What a force expression and a rate may not be, checked on the text before muparser sees it:
-// an assignment with '=' (muparser's "t = 1" sets t; "+=", "-=", ... too), which would change a
-// variable that the force and the other rates read. Throws std::invalid_argument naming what is
-// assigned and the position; `reads` says what the expression may read ("a force only reads t,
-// u and v").
-void refuse_assignment(const std::string& text, const std::string& reads);
-// After the first Eval: several comma-separated values ("1,2"), of which muparser keeps the last.
-// Throws std::invalid_argument.
-void refuse_value_list(mu::Parser& parser);
-
 // The rates g_i of the model's internal variables, evaluated at (t, state, z).
 class InternalRates {
  public:
@@ -48,13 +29,10 @@ class InternalRates {
   // is not finite where the run evaluates it is reported there (evaluate); the scene reader
   // evaluates every rate at the initial state.
   explicit InternalRates(const Model& model);
-  InternalRates(const InternalRates& other);
-  InternalRates& operator=(const InternalRates& other);
-  InternalRates(InternalRates&&) noexcept;
-  InternalRates& operator=(InternalRates&&) noexcept;
-  ~InternalRates();
 
   std::size_t size() const { return count_; }
+  // The model with its rates compiled (what the scene reader keeps).
+  const Model& model() const { return model_; }
   // rate[i] = g_i(t, s.u, s.v, s.z) for i < size(); std::runtime_error naming the variable and t
   // where a rate fails or is not finite.
   void evaluate(double t, const StateWithInternal& s, std::array<double, kMaxInternal>& rate) const;
@@ -64,10 +42,8 @@ class InternalRates {
                                             double* rate) const;
 
  private:
-  struct Parsers;
-  Model model_;
+  Model model_;  // its rates compiled, evaluated through this copy's own parsers
   std::size_t count_ = 0;
-  std::unique_ptr<Parsers> parsers_;
 };
 
 }  // namespace impact

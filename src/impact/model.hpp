@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "impact/bonding.hpp"
+#include "impact/expression.hpp"
 
 namespace impact {
 
@@ -54,13 +55,11 @@ struct LinearSpring {
 struct InternalVariable {
   std::string name;
   double initial = 0.0;
-  std::string rate;
+  Expression rate;  // compiled by the scene reader (expression.hpp)
   bool operator==(const InternalVariable&) const = default;
 };
 
-// The most internal variables a model may have: a state carries them in a fixed array, so that
-// a step copies no heap memory.
-inline constexpr std::size_t kMaxInternal = 4;
+// The most internal variables a model may have: kMaxInternal (expression.hpp).
 
 // The body force of (2-1): f(t) = f + amplitude sin(omega t + phase) + expression(t), each part
 // optional (the scene reader lets a scene give either the harmonic part or an expression).
@@ -69,7 +68,7 @@ struct Model {
   double f = 0.0;                      // the constant part of the body force (2-1)
   std::optional<double> cor{};         // COR = -v_after / v_before, in [0, 1]
   std::optional<Harmonic> harmonic{};  // the harmonic part of the body force, if any
-  std::string expression{};            // muparser, of t (and u, v, z) added to it; empty: none
+  Expression expression{};             // muparser, of t (and u, v, z) added to it; empty: none
   // -k (u - u_eq) - c v added to it (LinearSpring); not with an expression
   std::optional<LinearSpring> linear{};
   std::vector<InternalVariable> internal{};  // at most kMaxInternal; empty for the paper's model

@@ -75,7 +75,7 @@ const KeySpec kForceKeys[] = {
                 "sin(62.83 * t)\" (pi is defined), or of t, the position u and the velocity v, "
                 "f(t, u, v), e.g. \"-400 * (u - 0.05) - 2 * v + 10 * sin(20 * t)\"",
      .get = [](const Scene& s) -> KeyValue {
-       return s.model.expression.empty() ? KeyValue() : KeyValue(s.model.expression);
+       return s.model.expression.empty() ? KeyValue() : KeyValue(s.model.expression.text());
      },
      .set = [](Scene& s, const KeyValue& v) { s.model.expression = std::get<std::string>(v); }},
     // force.linear = { k, c, u_eq }: adds -k (u - u_eq) - c v to f and the harmonic part.
@@ -131,7 +131,7 @@ std::span<const KeySpec> force_keys() {
   return kForceKeys;
 }
 
-void check_force(const KeyReader& r, const toml::table& root, const Scene& scene) {
+void check_force(const KeyReader& r, const toml::table& root, Scene& scene) {
   const toml::table* force = root.get("force") ? root.get("force")->as_table() : nullptr;
   if (!force) return;
   if (force->empty())
@@ -168,14 +168,15 @@ void check_force(const KeyReader& r, const toml::table& root, const Scene& scene
     r.fail_value("force", "expression", *expression,
                  "the expression is empty; give a function of t, or leave the key out");
   try {
-    const ForceFunction force(scene.model);
+    // Compiled here, once: the solvers' copies share what the parse found.
+    scene.model.expression = Expression(scene.model.expression.text(), scene.model.internal);
     // A force of the state where the run starts (z at its initial values), so that one that is
     // not finite there fails with the scene; a force of t alone was evaluated at t = 0 above.
-    if (force.state_dependent()) {
+    if (scene.model.expression.reads_state()) {
+      const StateWithInternal start = with_internal(scene.model, scene.initial);
       try {
-        force.at(0.0, scene.initial);
+        force_expression_at(scene.model.expression, 0.0, start, start.z.data());
       } catch (const std::runtime_error& e) {
-        const StateWithInternal start = with_internal(scene.model, scene.initial);
         r.fail_value("force", "expression", *expression,
                      std::string(e.what()) + " (the initial state: " +
                          (scene.model.internal.empty()

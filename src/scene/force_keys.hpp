@@ -17,6 +17,7 @@ namespace impact {
 // expression that muparser cannot evaluate at t = 0 (the message gives the position). Whether the
 // method takes the force is refusal()'s (capabilities.hpp), asked once the whole scene is read.
 // Throws SceneError naming where the key came from, the key, its value and what is allowed.
-void check_force(const KeyReader& r, const toml::table& root, const Scene& scene);
+// Compiles the scene's expression (expression.hpp), once, for the internal variables read before.
+void check_force(const KeyReader& r, const toml::table& root, Scene& scene);
 
 }  // namespace impact

@@ -39,7 +39,7 @@ const KeySpec kInternalKeys[] = {
      .required = true,
      .meaning = "g in z' = g(t, u, v, z), a muparser expression of t, u, v and the internal "
                 "variables by name",
-     .get_variable = [](const InternalVariable& z) -> KeyValue { return z.rate; },
+     .get_variable = [](const InternalVariable& z) -> KeyValue { return z.rate.text(); },
      .set_variable = [](InternalVariable& z,
                         const KeyValue& v) { z.rate = std::get<std::string>(v); }},
 };
@@ -136,6 +136,7 @@ void read_internal(const KeyReader& r, const toml::table& root, Scene& scene) {
       throw std::invalid_argument(std::string(e.what()) +
                                   " (the initial state: " + describe(start) + ")");
     }
+    scene.model.internal = rates.model().internal;  // the rates compiled, once
   } catch (const std::invalid_argument& e) {
     r.fail_table("internal", where, e.what());
   }

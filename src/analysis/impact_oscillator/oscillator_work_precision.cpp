@@ -24,7 +24,7 @@ std::vector<std::string_view> refusing_methods() {
 }
 
 Oscillator oscillator_of(const Scene& scene) {
-  const std::string& e = scene.model.expression;
+  const std::string& e = scene.model.expression.text();
   const std::string head = "-u - cos(", tail = "*t)";
   const auto bad = [&] {
     return std::runtime_error(
