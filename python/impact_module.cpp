@@ -15,12 +15,12 @@
 #include <vector>
 
 #include "give_array.hpp"
-#include "impact/capabilities.hpp"
-#include "impact/channels.hpp"
-#include "impact/error_norms.hpp"
 #include "impact/format.hpp"
-#include "impact/run.hpp"
-#include "impact/run_scene.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/methods/capabilities.hpp"
+#include "impact/output/channels.hpp"
+#include "impact/run/error_norms.hpp"
+#include "impact/run/run_scene.hpp"
 #include "impact/version.hpp"
 #include "module_docs.hpp"
 #include "module_gil.hpp"
@@ -46,7 +46,7 @@ py::ssize_t row_count(const Scene& scene) {
   return static_cast<py::ssize_t>(steps / every + 1 + (steps % every != 0));
 }
 
-// A float64 column of a row, as the CSV writer (output.cpp) writes it. A channel without a
+// A float64 column of a row, as the CSV writer (csv.cpp) writes it. A channel without a
 // column here is refused before the run, never returned unfilled.
 double row_value(const OutputRow& row, Channel channel) {
   if (channel == Channel::iterations)

@@ -3,8 +3,8 @@
 #include <new>
 #include <stdexcept>
 
-#include "impact/atomic_file.hpp"
-#include "impact/run.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/output/atomic_file.hpp"
 #include "scene/scene_error.hpp"
 
 namespace py = pybind11;

@@ -24,7 +24,8 @@ inline constexpr std::int64_t kPollSteps = 1024;
 // Made on the calling thread, which holds the GIL. Called from any thread during the work: on
 // the calling thread it runs Python's signal handlers (PyErr_CheckSignals, with the GIL) at most
 // every kInterval; once a handler raised (the Python error is set), it sets stop() and every call
-// on every thread throws impact::Interrupted (run.hpp), as the library does where it reads stop().
+// on every thread throws impact::Interrupted (simulate.hpp), as the library does where it reads
+// stop().
 class SignalPoll {
  public:
   static constexpr std::chrono::milliseconds kInterval{10};

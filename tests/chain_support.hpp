@@ -4,10 +4,10 @@
 #include <cmath>
 #include <cstdint>
 
-#include "impact/chain.hpp"
-#include "impact/chain_moreau_jean.hpp"
-#include "impact/chain_reference.hpp"
-#include "impact/run.hpp"
+#include "impact/chain/chain.hpp"
+#include "impact/chain/chain_moreau_jean.hpp"
+#include "impact/chain/chain_reference.hpp"
+#include "impact/loop/simulate.hpp"
 
 namespace impact::testing {
 

@@ -20,11 +20,11 @@
 #include <vector>
 
 #include "cli_support.hpp"
-#include "impact/capabilities.hpp"
-#include "impact/error_norms.hpp"
-#include "impact/model.hpp"
-#include "impact/output.hpp"
-#include "impact/run.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/methods/capabilities.hpp"
+#include "impact/model/model.hpp"
+#include "impact/output/csv.hpp"
+#include "impact/run/error_norms.hpp"
 #include "scene/read_scene.hpp"
 
 using Catch::Contains;

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "impact/event.hpp"
+#include "impact/model/event.hpp"
 #include "scene/read_scene.hpp"
 
 namespace impact::testing {

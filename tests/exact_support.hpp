@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "check_near.hpp"
-#include "impact/exact.hpp"
+#include "impact/references/exact.hpp"
 
 using impact::energy;
 using impact::ExactSolution;

@@ -13,11 +13,13 @@
 #include <vector>
 
 #include "cli_support.hpp"
-#include "impact/error_norms.hpp"
-#include "impact/output.hpp"
-#include "impact/run.hpp"
-#include "impact/step_events.hpp"
-#include "impact/work_energy.hpp"
+#include "impact/forces/work_energy.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/output/csv.hpp"
+#include "impact/run/error_norms.hpp"
+#include "impact/run/row_stream.hpp"
+#include "impact/run/scene.hpp"
+#include "impact/run/step_events.hpp"
 #include "scene/read_scene.hpp"
 
 namespace impact::testing {

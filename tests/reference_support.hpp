@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "check_near.hpp"
-#include "impact/model.hpp"
+#include "impact/model/model.hpp"
 
 namespace impact::testing {
 

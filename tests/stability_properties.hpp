@@ -13,11 +13,11 @@
 #include <random>
 #include <string>
 
-#include "impact/any_stepper.hpp"
-#include "impact/fb_newton.hpp"
-#include "impact/output.hpp"
-#include "impact/run.hpp"
-#include "impact/scene.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/output/csv.hpp"
+#include "impact/run/any_stepper.hpp"
+#include "impact/run/scene.hpp"
+#include "impact/steppers/fb_newton.hpp"
 
 namespace impact::stability_properties {
 

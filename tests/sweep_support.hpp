@@ -12,10 +12,10 @@
 
 #include "analysis/rest.hpp"
 #include "cli_support.hpp"
-#include "impact/ensemble.hpp"
-#include "impact/error_norms.hpp"
-#include "impact/output.hpp"
-#include "impact/summary.hpp"
+#include "impact/ensemble/ensemble.hpp"
+#include "impact/output/csv.hpp"
+#include "impact/run/error_norms.hpp"
+#include "impact/run/summary.hpp"
 #include "scene/read_scene.hpp"
 #include "scene/sweep_grid.hpp"
 

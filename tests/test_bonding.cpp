@@ -1,6 +1,6 @@
-// The bonding field (impact/bonding.hpp): adhesion with damage, u'' = N + f - gamma beta^2 R(g),
-// beta' = -beta (gamma R^2 - eps_a)_+. What these tests protect: exact's closed-form flights in
-// the well with no damage (the return time 2 atan(v0 omega / G) / omega) and event_driven's
+// The bonding field (impact/model/bonding.hpp): adhesion with damage, u'' = N + f - gamma beta^2
+// R(g), beta' = -beta (gamma R^2 - eps_a)_+. What these tests protect: exact's closed-form flights
+// in the well with no damage (the return time 2 atan(v0 omega / G) / omega) and event_driven's
 // agreement with them; the energy identity E + D + impact losses = E(0); beta in [0, beta0] and
 // never rising, D never falling; the paper's model bit for bit where the field does not act
 // (gamma = 0, beta0 = 0); and [bonding]'s keys and refusals with exit 2.
@@ -10,10 +10,10 @@
 #include <vector>
 
 #include "cli_support.hpp"
-#include "impact/any_stepper.hpp"
-#include "impact/run.hpp"
-#include "impact/scene.hpp"
-#include "impact/step_events.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/run/any_stepper.hpp"
+#include "impact/run/scene.hpp"
+#include "impact/run/step_events.hpp"
 #include "scene/read_scene.hpp"
 
 using Catch::Contains;

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "cli_support.hpp"
-#include "impact/capabilities.hpp"
+#include "impact/methods/capabilities.hpp"
 #include "scene/read_scene.hpp"
 
 using Catch::Contains;

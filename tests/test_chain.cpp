@@ -11,12 +11,12 @@
 
 #include "analysis/fit.hpp"
 #include "chain_support.hpp"
-#include "impact/chain.hpp"
-#include "impact/chain_moreau_jean.hpp"
-#include "impact/chain_reference.hpp"
-#include "impact/exact.hpp"
-#include "impact/moreau_jean.hpp"
-#include "impact/run.hpp"
+#include "impact/chain/chain.hpp"
+#include "impact/chain/chain_moreau_jean.hpp"
+#include "impact/chain/chain_reference.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/references/exact.hpp"
+#include "impact/steppers/moreau_jean.hpp"
 
 using namespace impact;
 using impact::testing::max_position_error;

@@ -14,11 +14,11 @@
 #include "analysis/fit.hpp"
 #include "chain_support.hpp"
 #include "check_near.hpp"
-#include "impact/chain.hpp"
-#include "impact/chain_moreau_jean.hpp"
-#include "impact/chain_reference.hpp"
-#include "impact/exact_march.hpp"
-#include "impact/run.hpp"
+#include "impact/chain/chain.hpp"
+#include "impact/chain/chain_moreau_jean.hpp"
+#include "impact/chain/chain_reference.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/references/exact_march.hpp"
 
 using namespace impact;
 using impact::testing::max_position_error;

@@ -11,10 +11,10 @@
 #include <utility>
 #include <vector>
 
-#include "impact/any_stepper.hpp"
-#include "impact/contact_law.hpp"
-#include "impact/ensemble.hpp"
-#include "impact/run.hpp"
+#include "impact/ensemble/ensemble.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/model/contact_law.hpp"
+#include "impact/run/any_stepper.hpp"
 
 using namespace impact;
 

@@ -19,7 +19,7 @@
 #include "analysis/convergence/proof_tallies.hpp"
 #include "analysis/fit.hpp"
 #include "analysis/reference.hpp"
-#include "impact/direct.hpp"
+#include "impact/steppers/direct.hpp"
 
 using namespace impact;
 using namespace impact::convergence;

@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "impact/any_stepper.hpp"
-#include "impact/run.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/run/any_stepper.hpp"
 #include "scene/read_scene.hpp"
 
 namespace {

@@ -1,19 +1,19 @@
-// direct_located (src/impact/direct_located.hpp): (5-1) with each impact located inside its step.
-// Its closed forms against explicit flights, its exactness under a constant force (Proposition L.1
-// of paper_notes/error_analysis.md), the impulse identity (4-9) with the body force, and its order
-// under f(t).
+// direct_located (src/impact/steppers/direct_located.hpp): (5-1) with each impact located inside
+// its step. Its closed forms against explicit flights, its exactness under a constant force
+// (Proposition L.1 of paper_notes/error_analysis.md), the impulse identity (4-9) with the body
+// force, and its order under f(t).
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
 #include <vector>
 
 #include "analysis/fit.hpp"
-#include "impact/any_stepper.hpp"
-#include "impact/direct_located.hpp"
-#include "impact/error_norms.hpp"
-#include "impact/force.hpp"
-#include "impact/run.hpp"
-#include "impact/scene.hpp"
+#include "impact/forces/force.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/run/any_stepper.hpp"
+#include "impact/run/error_norms.hpp"
+#include "impact/run/scene.hpp"
+#include "impact/steppers/direct_located.hpp"
 
 using namespace impact;
 

@@ -9,10 +9,10 @@
 #include <string_view>
 #include <vector>
 
-#include "impact/direct.hpp"
-#include "impact/ensemble.hpp"
-#include "impact/moreau_jean.hpp"
-#include "impact/run.hpp"
+#include "impact/ensemble/ensemble.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/steppers/direct.hpp"
+#include "impact/steppers/moreau_jean.hpp"
 
 using namespace impact;
 

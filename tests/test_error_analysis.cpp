@@ -14,9 +14,9 @@
 #include "analysis/error_analysis/error_analysis.hpp"
 #include "analysis/error_analysis/error_bounds.hpp"
 #include "analysis/reference.hpp"
-#include "impact/any_stepper.hpp"
-#include "impact/run.hpp"
-#include "impact/scene.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/run/any_stepper.hpp"
+#include "impact/run/scene.hpp"
 
 using namespace impact;
 using namespace impact::error_analysis;

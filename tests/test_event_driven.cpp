@@ -11,12 +11,12 @@
 #include <string>
 #include <vector>
 
-#include "impact/any_stepper.hpp"
-#include "impact/error_norms.hpp"
-#include "impact/event_driven.hpp"
-#include "impact/exact.hpp"
-#include "impact/run.hpp"
-#include "impact/scene.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/references/event_driven.hpp"
+#include "impact/references/exact.hpp"
+#include "impact/run/any_stepper.hpp"
+#include "impact/run/error_norms.hpp"
+#include "impact/run/scene.hpp"
 
 using impact::Event;
 using impact::EventDrivenParams;

@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "cli_support.hpp"
-#include "impact/force.hpp"
-#include "impact/run.hpp"
-#include "impact/step_events.hpp"
+#include "impact/forces/force.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/run/step_events.hpp"
 
 using Catch::Contains;
 using impact::Event;

@@ -11,10 +11,10 @@
 #include <numbers>
 #include <vector>
 
-#include "impact/any_stepper.hpp"
-#include "impact/exact.hpp"
-#include "impact/exact_march.hpp"
-#include "impact/run.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/references/exact.hpp"
+#include "impact/references/exact_march.hpp"
+#include "impact/run/any_stepper.hpp"
 
 using impact::ClosedFormMarch;
 using impact::Event;

@@ -8,10 +8,10 @@
 #include <vector>
 
 #include "cli_support.hpp"
-#include "impact/any_stepper.hpp"
-#include "impact/exact.hpp"
-#include "impact/run.hpp"
-#include "impact/scene.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/references/exact.hpp"
+#include "impact/run/any_stepper.hpp"
+#include "impact/run/scene.hpp"
 
 using Catch::Matchers::Contains;
 using namespace impact::testing;

@@ -1,5 +1,5 @@
-// The force compiled once (impact/expression.hpp): the scene reader parses force.expression and
-// each rate once, the solvers' copies share what it found and each copy that evaluates parses
+// The force compiled once (impact/model/expression.hpp): the scene reader parses force.expression
+// and each rate once, the solvers' copies share what it found and each copy that evaluates parses
 // once more (muparser binds its variables by address), copies evaluate bit for bit as the
 // original, on other threads too, and a bad expression keeps its position in the message.
 #include <bit>
@@ -10,13 +10,13 @@
 #include <thread>
 #include <vector>
 
-#include "impact/any_stepper.hpp"
-#include "impact/capabilities.hpp"
-#include "impact/expression.hpp"
-#include "impact/force.hpp"
-#include "impact/internal.hpp"
-#include "impact/run.hpp"
-#include "impact/scene.hpp"
+#include "impact/forces/force.hpp"
+#include "impact/forces/internal.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/methods/capabilities.hpp"
+#include "impact/model/expression.hpp"
+#include "impact/run/any_stepper.hpp"
+#include "impact/run/scene.hpp"
 #include "scene/read_scene.hpp"
 
 using Catch::Contains;

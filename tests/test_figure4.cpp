@@ -15,9 +15,9 @@
 #include "analysis/figure4/figure4_readings.hpp"
 #include "analysis/fit.hpp"
 #include "analysis/reference.hpp"
-#include "impact/event.hpp"
-#include "impact/exact.hpp"
-#include "impact/exact_march.hpp"
+#include "impact/model/event.hpp"
+#include "impact/references/exact.hpp"
+#include "impact/references/exact_march.hpp"
 
 using namespace impact;
 using namespace impact::figure4;

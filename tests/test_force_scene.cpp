@@ -8,8 +8,8 @@
 #include <string>
 
 #include "cli_support.hpp"
-#include "impact/force.hpp"
-#include "impact/work_energy.hpp"
+#include "impact/forces/force.hpp"
+#include "impact/forces/work_energy.hpp"
 #include "scene/read_scene.hpp"
 #include "scene_support.hpp"
 

@@ -11,14 +11,14 @@
 #include <vector>
 
 #include "analysis/fit.hpp"
-#include "impact/any_stepper.hpp"
-#include "impact/ensemble.hpp"
-#include "impact/force.hpp"
-#include "impact/run.hpp"
-#include "impact/run_result.hpp"
-#include "impact/scene.hpp"
-#include "impact/scheme_flight.hpp"
-#include "impact/summary.hpp"
+#include "impact/ensemble/ensemble.hpp"
+#include "impact/forces/force.hpp"
+#include "impact/forces/scheme_flight.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/run/any_stepper.hpp"
+#include "impact/run/run_result.hpp"
+#include "impact/run/scene.hpp"
+#include "impact/run/summary.hpp"
 #include "trajectory_support.hpp"
 
 using namespace impact;

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "cli_support.hpp"
-#include "impact/capabilities.hpp"
+#include "impact/methods/capabilities.hpp"
 #include "scene/scene_keys.hpp"
 
 using Catch::Contains;

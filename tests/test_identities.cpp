@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "cli_support.hpp"
-#include "impact/capabilities.hpp"
-#include "impact/force.hpp"
+#include "impact/forces/force.hpp"
+#include "impact/methods/capabilities.hpp"
 #include "output_support.hpp"
 #include "scene/read_scene.hpp"
 
@@ -58,7 +58,7 @@ double impulse(const Table& rows) {
 // The integral of f over [0, T] along the run's rows (every = 1): for a force of t alone by
 // composite Simpson on 20000 intervals (its error below 1e-15 here); for a force of the state, the
 // discrete force the time-steppers apply, the step means f^l at (u^l, v^l, z^l) (scheme_flight.hpp,
-// internal_stepper.hpp), or, for a method that follows the motion, the trapezoidal rule on the
+// with_internal.hpp), or, for a method that follows the motion, the trapezoidal rule on the
 // rows with its error estimated by the same rule on every other row (`error`).
 double force_integral(const Scene& scene, const Table& rows, bool follows_motion, double& error) {
   ForceFunction f(scene.model);

@@ -1,5 +1,5 @@
-// Internal variables of the model (impact/model.hpp, internal.hpp): z' = g(t, u, v, z), read by
-// the force, carried by the state (StateWithInternal) to every observer: rows, summary, errors
+// Internal variables of the model (impact/model/model.hpp, internal.hpp): z' = g(t, u, v, z), read
+// by the force, carried by the state (StateWithInternal) to every observer: rows, summary, errors
 // against the reference and events. The test system has a closed form: a pull that decays,
 // f = 5 - 15 z with z' = -z, z(0) = 1, so z = e^-t and f(t) = 5 - 15 e^-t: a particle dropped on
 // the floor with a COR of 0.2 bounces, comes to rest while f < 0, and lifts off where f crosses 0,
@@ -10,11 +10,11 @@
 #include <vector>
 
 #include "cli_support.hpp"
-#include "impact/any_stepper.hpp"
-#include "impact/error_norms.hpp"
-#include "impact/run.hpp"
-#include "impact/run_scene.hpp"
-#include "impact/scene.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/run/any_stepper.hpp"
+#include "impact/run/error_norms.hpp"
+#include "impact/run/run_scene.hpp"
+#include "impact/run/scene.hpp"
 #include "output_support.hpp"
 #include "scene/read_scene.hpp"
 

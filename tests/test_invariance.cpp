@@ -14,10 +14,10 @@
 #include <vector>
 
 #include "cli_support.hpp"
-#include "impact/any_stepper.hpp"
 #include "impact/format.hpp"
-#include "impact/run_scene.hpp"
-#include "impact/scene.hpp"
+#include "impact/run/any_stepper.hpp"
+#include "impact/run/run_scene.hpp"
+#include "impact/run/scene.hpp"
 
 using namespace impact;
 

@@ -13,7 +13,7 @@
 
 #include "analysis/lemma1/lemma1.hpp"
 #include "analysis/reference.hpp"
-#include "impact/exact.hpp"
+#include "impact/references/exact.hpp"
 #include "reference_support.hpp"
 #include "scene/read_scene.hpp"
 

@@ -12,8 +12,8 @@
 #include "analysis/lemma1/lemma1.hpp"
 #include "analysis/lemma3/bounds.hpp"
 #include "analysis/lemma3/lemma3_forcing.hpp"
-#include "impact/exact_march.hpp"
-#include "impact/force.hpp"
+#include "impact/forces/force.hpp"
+#include "impact/references/exact_march.hpp"
 
 using namespace impact;
 using namespace impact::lemma1;

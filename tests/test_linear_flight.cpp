@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "check_near.hpp"
-#include "impact/linear_flight.hpp"
+#include "impact/references/linear_flight.hpp"
 
 using impact::AccelerationBound;
 using impact::FlightMotion;

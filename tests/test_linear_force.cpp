@@ -12,10 +12,10 @@
 
 #include "check_near.hpp"
 #include "cli_support.hpp"
-#include "impact/any_stepper.hpp"
-#include "impact/force.hpp"
-#include "impact/run_scene.hpp"
-#include "impact/scene.hpp"
+#include "impact/forces/force.hpp"
+#include "impact/run/any_stepper.hpp"
+#include "impact/run/run_scene.hpp"
+#include "impact/run/scene.hpp"
 #include "scene/read_scene.hpp"
 
 using Catch::Contains;

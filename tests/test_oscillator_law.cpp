@@ -13,8 +13,8 @@
 #include "analysis/impact_oscillator/oscillator_law.hpp"
 #include "check_near.hpp"
 #include "impact/format.hpp"
-#include "impact/run_scene.hpp"
-#include "impact/scene.hpp"
+#include "impact/run/run_scene.hpp"
+#include "impact/run/scene.hpp"
 
 using namespace impact;
 using namespace impact::impact_oscillator;

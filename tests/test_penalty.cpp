@@ -11,8 +11,8 @@
 #include <utility>
 #include <variant>
 
-#include "impact/any_stepper.hpp"
-#include "impact/penalty.hpp"
+#include "impact/run/any_stepper.hpp"
+#include "impact/steppers/penalty.hpp"
 #include "scene/read_scene.hpp"
 
 namespace {

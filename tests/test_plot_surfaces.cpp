@@ -38,8 +38,8 @@ std::vector<Feature> features() {
   return {
       {"constant force, COR", drop + "[floor]\ncor = 0.5\n[force]\nf = -9.81\n", "direct"},
       {"constant force, no COR", drop + "[force]\nf = -9.81\n", "fb_newton"},
-      {"harmonic force", drop + "[floor]\ncor = 0.5\n[force]\nf = -9.81\namplitude = 3.0\n" +
-                             "omega = 20.0\n",
+      {"harmonic force",
+       drop + "[floor]\ncor = 0.5\n[force]\nf = -9.81\namplitude = 3.0\n" + "omega = 20.0\n",
        "moreau_jean"},
       {"expression of t", drop + "[floor]\ncor = 0.5\n[force]\nexpression = \"-9.81 + sin(3*t)\"\n",
        "event_driven"},
@@ -142,13 +142,13 @@ TEST_CASE("plot: the figure never replaces a file it draws, whatever the name or
       {"plot run.csv -o sidecar.svg", "--out names the CSV's provenance (run.csv.json)"},
   };
   std::vector<std::string> before;
-  for (const std::string f : {"run.csv", "run.svg", "ref.csv", "ref.svg", "ev.csv", "ev.svg",
-                              "run.csv.json"})
+  for (const std::string f :
+       {"run.csv", "run.svg", "ref.csv", "ref.svg", "ev.csv", "ev.svg", "run.csv.json"})
     before.push_back(slurp(dir / f));
   for (const auto& [args, says] : cases) CHECK_FAILS_CLEANLY(dir, args, 2, Contains(says));
   std::size_t i = 0;
-  for (const std::string f : {"run.csv", "run.svg", "ref.csv", "ref.svg", "ev.csv", "ev.svg",
-                              "run.csv.json"}) {
+  for (const std::string f :
+       {"run.csv", "run.svg", "ref.csv", "ref.svg", "ev.csv", "ev.svg", "run.csv.json"}) {
     INFO(f);
     CHECK(slurp(dir / f) == before[i++]);
   }

@@ -6,10 +6,10 @@
 #include <cmath>
 #include <cstdint>
 
-#include "impact/any_stepper.hpp"
-#include "impact/error_norms.hpp"
-#include "impact/exact.hpp"
-#include "impact/run.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/references/exact.hpp"
+#include "impact/run/any_stepper.hpp"
+#include "impact/run/error_norms.hpp"
 
 using impact::Model;
 using impact::State;

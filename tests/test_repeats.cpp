@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "impact/direct.hpp"
-#include "impact/fb_newton.hpp"
-#include "impact/moreau_jean.hpp"
-#include "impact/run.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/steppers/direct.hpp"
+#include "impact/steppers/fb_newton.hpp"
+#include "impact/steppers/moreau_jean.hpp"
 
 using namespace impact;
 

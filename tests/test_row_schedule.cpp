@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "cli_support.hpp"
-#include "impact/row_stream.hpp"
-#include "impact/run_scene.hpp"
+#include "impact/run/row_stream.hpp"
+#include "impact/run/run_scene.hpp"
 #include "output_support.hpp"
 
 using namespace impact::testing;

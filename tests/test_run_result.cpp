@@ -11,9 +11,10 @@
 #include <vector>
 
 #include "cli_support.hpp"
-#include "impact/output.hpp"
-#include "impact/run_result.hpp"
-#include "impact/step_events.hpp"
+#include "impact/output/csv.hpp"
+#include "impact/run/run_result.hpp"
+#include "impact/run/scene.hpp"
+#include "impact/run/step_events.hpp"
 #include "scene/provenance.hpp"
 #include "scene/read_scene.hpp"
 #include "scene/resolved_scene.hpp"

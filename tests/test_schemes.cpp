@@ -8,9 +8,10 @@
 #include <vector>
 
 #include "analysis/tolerances.hpp"
-#include "impact/any_stepper.hpp"
-#include "impact/output.hpp"
-#include "impact/run.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/output/csv.hpp"
+#include "impact/run/any_stepper.hpp"
+#include "impact/run/scene.hpp"
 #include "scene/read_scene.hpp"
 #include "trajectory_support.hpp"
 

@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "impact/any_stepper.hpp"
-#include "impact/force.hpp"
-#include "impact/harmonic_series.hpp"
-#include "impact/run.hpp"
+#include "impact/forces/force.hpp"
+#include "impact/forces/harmonic_series.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/run/any_stepper.hpp"
 
 using impact::Model;
 using impact::State;

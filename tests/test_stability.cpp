@@ -21,11 +21,12 @@
 #include "analysis/stability/stability_cases.hpp"
 #include "analysis/stability/stability_penalty.hpp"
 #include "analysis/stability/stability_study.hpp"
-#include "impact/any_stepper.hpp"
-#include "impact/fb_newton.hpp"
-#include "impact/gsl_errors.hpp"
-#include "impact/output.hpp"
-#include "impact/run.hpp"
+#include "impact/forces/gsl_errors.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/output/csv.hpp"
+#include "impact/run/any_stepper.hpp"
+#include "impact/run/scene.hpp"
+#include "impact/steppers/fb_newton.hpp"
 #include "stability_properties.hpp"
 
 using namespace impact;

@@ -1,4 +1,4 @@
-// A force of the state f(t, u, v) through force.expression (impact/force.hpp): the impact
+// A force of the state f(t, u, v) through force.expression (impact/forces/force.hpp): the impact
 // oscillator, a spring-damper driven harmonically above a floor with a COR, under event_driven
 // (the reference), direct and moreau_jean (the explicit discrete force of scheme_flight.hpp), the
 // refusals of the methods that cannot take it, and `impact run`'s CSV against the library's run.
@@ -9,11 +9,11 @@
 
 #include "analysis/fit.hpp"
 #include "cli_support.hpp"
-#include "impact/any_stepper.hpp"
-#include "impact/error_norms.hpp"
-#include "impact/force.hpp"
-#include "impact/run.hpp"
-#include "impact/scene.hpp"
+#include "impact/forces/force.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/run/any_stepper.hpp"
+#include "impact/run/error_norms.hpp"
+#include "impact/run/scene.hpp"
 #include "output_support.hpp"
 
 using Catch::Contains;

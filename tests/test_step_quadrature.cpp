@@ -9,10 +9,10 @@
 #include <string>
 
 #include "cli_support.hpp"
-#include "impact/any_stepper.hpp"
-#include "impact/force.hpp"
-#include "impact/run.hpp"
-#include "impact/step_quadrature.hpp"
+#include "impact/forces/force.hpp"
+#include "impact/forces/step_quadrature.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/run/any_stepper.hpp"
 
 using Catch::Matchers::Contains;
 using impact::Model;

@@ -12,10 +12,11 @@
 #include <vector>
 
 #include "cli_support.hpp"
-#include "impact/channels.hpp"
-#include "impact/output.hpp"
-#include "impact/run_result.hpp"
-#include "impact/run_scene.hpp"
+#include "impact/output/channels.hpp"
+#include "impact/output/csv.hpp"
+#include "impact/run/run_result.hpp"
+#include "impact/run/run_scene.hpp"
+#include "impact/run/scene.hpp"
 #include "output_support.hpp"
 #include "scene/read_scene.hpp"
 

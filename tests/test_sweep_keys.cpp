@@ -11,9 +11,10 @@
 #include <vector>
 
 #include "cli_support.hpp"
-#include "impact/output.hpp"
-#include "impact/run_result.hpp"
-#include "impact/summary.hpp"
+#include "impact/output/csv.hpp"
+#include "impact/run/run_result.hpp"
+#include "impact/run/scene.hpp"
+#include "impact/run/summary.hpp"
 #include "scene/read_scene.hpp"
 
 using Catch::Contains;

@@ -15,8 +15,8 @@
 #include "analysis/work_precision/work_precision_study.hpp"
 #include "analysis/work_precision_lyapunov.hpp"
 #include "analysis/work_precision_reference.hpp"
-#include "impact/any_stepper.hpp"
-#include "impact/error_norms.hpp"
+#include "impact/run/any_stepper.hpp"
+#include "impact/run/error_norms.hpp"
 
 using namespace impact;
 using namespace impact::work_precision;

@@ -4,8 +4,8 @@
 #include <cstddef>
 #include <vector>
 
-#include "impact/model.hpp"
-#include "impact/run.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/model/model.hpp"
 
 namespace impact::testing {
 

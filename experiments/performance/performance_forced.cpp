@@ -7,8 +7,8 @@
 
 #include "analysis/experiment.hpp"
 #include "analysis/work_precision_reference.hpp"
-#include "impact/any_stepper.hpp"
-#include "impact/run.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/run/any_stepper.hpp"
 #include "scene/read_scene.hpp"
 
 namespace impact {

@@ -8,10 +8,11 @@
 #include <vector>
 
 #include "analysis/experiment.hpp"
-#include "impact/any_stepper.hpp"
-#include "impact/direct.hpp"
-#include "impact/output.hpp"
-#include "impact/run.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/output/csv.hpp"
+#include "impact/run/any_stepper.hpp"
+#include "impact/run/scene.hpp"
+#include "impact/steppers/direct.hpp"
 #include "performance_cli.hpp"
 #include "scene/read_scene.hpp"
 

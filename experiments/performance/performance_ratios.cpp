@@ -7,8 +7,8 @@
 
 #include "analysis/experiment.hpp"
 #include "analysis/markdown.hpp"
-#include "impact/ensemble.hpp"
-#include "impact/output.hpp"
+#include "impact/ensemble/ensemble.hpp"
+#include "impact/output/csv.hpp"
 #include "performance_cli.hpp"
 
 namespace impact {

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "impact/force.hpp"
+#include "impact/forces/force.hpp"
 
 namespace impact {
 namespace {

@@ -25,7 +25,7 @@
 #include <cstdint>
 #include <memory>
 
-#include "impact/model.hpp"
+#include "impact/model/model.hpp"
 
 namespace impact {
 

@@ -7,9 +7,9 @@
 
 #include "analysis/laplace.hpp"
 #include "analysis/tolerances.hpp"
-#include "impact/any_stepper.hpp"
-#include "impact/run.hpp"
-#include "impact/work_energy.hpp"
+#include "impact/forces/work_energy.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/run/any_stepper.hpp"
 
 namespace impact {
 

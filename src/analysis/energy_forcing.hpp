@@ -4,7 +4,7 @@
 //   W^l = (v^l)^2/2 - f(0) u^0 - sum_{k<l} f^k (u^{k+1} - u^k), the kinetic energy minus the work
 //         of the step-mean force f^k (ForceFunction::step_mean) done so far, started at E^0; its
 //         continuous counterpart is v^2/2 - f(0) u(0) - int_0^t f v, and for a constant f, W = E.
-//         It is the E channel of a run with f(t) (WorkEnergy, impact/work_energy.hpp).
+//         It is the E channel of a run with f(t) (WorkEnergy, impact/forces/work_energy.hpp).
 // (4-1)-(4-3) give W^{l+1} - W^l = N^l (u^{l+1} - u^l) = -N^l (u^l - phi) <= 0: the argument of
 // (4-6) carries over to W, not to E (E^{l+1} - E^l = W^{l+1} - W^l - (f(t_{l+1}) - f^l) u^{l+1}
 // + (f(t_l) - f^l) u^l, of either sign).
@@ -14,10 +14,10 @@
 #include <span>
 #include <vector>
 
-#include "impact/capabilities.hpp"
-#include "impact/force.hpp"
-#include "impact/model.hpp"
-#include "impact/scheme_flight.hpp"
+#include "impact/forces/force.hpp"
+#include "impact/forces/scheme_flight.hpp"
+#include "impact/methods/capabilities.hpp"
+#include "impact/model/model.hpp"
 
 namespace impact {
 

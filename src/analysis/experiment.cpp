@@ -6,7 +6,7 @@
 #include <exception>
 #include <sstream>
 
-#include "impact/output.hpp"
+#include "impact/output/csv.hpp"
 
 namespace impact {
 

@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "impact/exact.hpp"
+#include "impact/references/exact.hpp"
 
 namespace impact {
 

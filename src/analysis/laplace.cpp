@@ -7,10 +7,11 @@
 #include <string>
 
 #include "analysis/quadrature.hpp"
-#include "impact/any_stepper.hpp"
-#include "impact/contact_law.hpp"
-#include "impact/output.hpp"
-#include "impact/run.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/model/contact_law.hpp"
+#include "impact/output/csv.hpp"
+#include "impact/run/any_stepper.hpp"
+#include "impact/run/scene.hpp"
 
 namespace impact {
 

@@ -12,9 +12,9 @@
 #include <span>
 #include <vector>
 
-#include "impact/exact.hpp"
-#include "impact/model.hpp"
-#include "impact/scene.hpp"
+#include "impact/model/model.hpp"
+#include "impact/references/exact.hpp"
+#include "impact/run/scene.hpp"
 
 namespace impact {
 

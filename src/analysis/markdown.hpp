@@ -1,5 +1,6 @@
 // Numbers in the Markdown tables people read (results/*/table.md, orders.md): 3 significant
-// digits. Data files and summaries use round_trip (impact/output.hpp), which reads back exactly.
+// digits. Data files and summaries use round_trip (impact/output/csv.hpp), which reads back
+// exactly.
 #pragma once
 
 #include <string>

@@ -9,11 +9,11 @@
 #include <type_traits>
 #include <variant>
 
-#include "impact/any_stepper.hpp"
-#include "impact/exact.hpp"
-#include "impact/model.hpp"
-#include "impact/run.hpp"
-#include "impact/scene.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/model/model.hpp"
+#include "impact/references/exact.hpp"
+#include "impact/run/any_stepper.hpp"
+#include "impact/run/scene.hpp"
 
 namespace impact {
 

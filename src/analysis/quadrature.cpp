@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "impact/gsl_errors.hpp"
+#include "impact/forces/gsl_errors.hpp"
 
 namespace impact {
 namespace {

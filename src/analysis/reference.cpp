@@ -4,7 +4,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "impact/output.hpp"
+#include "impact/output/csv.hpp"
 
 namespace impact {
 namespace {

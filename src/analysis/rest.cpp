@@ -3,8 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "impact/any_stepper.hpp"
-#include "impact/run.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/run/any_stepper.hpp"
 
 namespace impact {
 

@@ -1,15 +1,15 @@
 // Analysis of a run for Section 5.2 (Figures 3 and 4): when the particle comes to rest, how much
 // energy each impact removes, and how far two methods' trajectories are apart. Contact steps and
-// episodes are those of impact/contact.hpp.
+// episodes are those of impact/model/contact.hpp.
 #pragma once
 
 #include <cstdint>
 #include <optional>
 #include <vector>
 
-#include "impact/contact.hpp"
-#include "impact/model.hpp"
-#include "impact/scene.hpp"
+#include "impact/model/contact.hpp"
+#include "impact/model/model.hpp"
+#include "impact/run/scene.hpp"
 
 namespace impact {
 

@@ -12,7 +12,7 @@
 #include "analysis/fit.hpp"
 #include "analysis/quadrature.hpp"
 #include "analysis/test_functions.hpp"
-#include "impact/gsl_errors.hpp"
+#include "impact/forces/gsl_errors.hpp"
 
 namespace impact {
 

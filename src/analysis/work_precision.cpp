@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "impact/any_stepper.hpp"
+#include "impact/run/any_stepper.hpp"
 
 namespace impact {
 

@@ -14,11 +14,11 @@
 #include <vector>
 
 #include "analysis/fit.hpp"
-#include "impact/error_norms.hpp"
-#include "impact/model.hpp"
-#include "impact/run.hpp"
-#include "impact/scene.hpp"
-#include "impact/step_events.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/model/model.hpp"
+#include "impact/run/error_norms.hpp"
+#include "impact/run/scene.hpp"
+#include "impact/run/step_events.hpp"
 
 namespace impact {
 

@@ -4,8 +4,8 @@
 #include <stdexcept>
 
 #include "analysis/work_precision_reference.hpp"
-#include "impact/any_stepper.hpp"
-#include "impact/exact.hpp"
+#include "impact/references/exact.hpp"
+#include "impact/run/any_stepper.hpp"
 #include "scene/read_scene.hpp"
 
 namespace impact {

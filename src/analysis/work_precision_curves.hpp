@@ -17,7 +17,7 @@
 
 #include "analysis/experiment.hpp"
 #include "analysis/work_precision.hpp"
-#include "impact/scene.hpp"
+#include "impact/run/scene.hpp"
 
 namespace impact {
 

@@ -7,7 +7,8 @@
 #include <stdexcept>
 
 #include "analysis/work_precision_reference.hpp"
-#include "impact/output.hpp"
+#include "impact/output/csv.hpp"
+#include "impact/run/scene.hpp"
 
 namespace impact {
 

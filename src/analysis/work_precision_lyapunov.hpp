@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "impact/scene.hpp"
+#include "impact/run/scene.hpp"
 
 namespace impact {
 

@@ -3,10 +3,10 @@
 #include <stdexcept>
 #include <string>
 
-#include "impact/any_stepper.hpp"
-#include "impact/event.hpp"
-#include "impact/run.hpp"
-#include "impact/step_events.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/model/event.hpp"
+#include "impact/run/any_stepper.hpp"
+#include "impact/run/step_events.hpp"
 
 namespace impact {
 

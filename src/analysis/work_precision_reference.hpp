@@ -11,8 +11,8 @@
 #include <string_view>
 #include <vector>
 
-#include "impact/model.hpp"
-#include "impact/scene.hpp"
+#include "impact/model/model.hpp"
+#include "impact/run/scene.hpp"
 
 namespace impact {
 

@@ -18,8 +18,8 @@
 #include "cli/plot_data.hpp"
 #include "cli/plot_figure.hpp"
 #include "cli/sweep_csv.hpp"
-#include "impact/capabilities.hpp"
-#include "impact/output.hpp"
+#include "impact/methods/capabilities.hpp"
+#include "impact/output/csv.hpp"
 #include "scene/toml_text.hpp"
 
 extern char** environ;

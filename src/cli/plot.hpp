@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "impact/atomic_file.hpp"
+#include "impact/output/atomic_file.hpp"
 
 namespace impact::cli {
 

@@ -10,8 +10,8 @@
 #include <map>
 
 #include "cli/sweep_csv.hpp"
-#include "impact/channels.hpp"
-#include "impact/output.hpp"
+#include "impact/output/channels.hpp"
+#include "impact/output/csv.hpp"
 #include "scene/toml_text.hpp"
 
 namespace impact::cli {

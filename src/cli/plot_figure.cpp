@@ -6,7 +6,7 @@
 #include <string_view>
 #include <utility>
 
-#include "impact/output.hpp"
+#include "impact/output/csv.hpp"
 
 namespace impact::cli {
 namespace {

@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "cli/plot_figure.hpp"
-#include "impact/output.hpp"
+#include "impact/output/csv.hpp"
 
 namespace impact::cli {
 namespace {

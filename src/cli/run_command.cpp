@@ -8,10 +8,11 @@
 #include <string>
 
 #include "cli/progress.hpp"
-#include "impact/capabilities.hpp"
-#include "impact/output.hpp"
-#include "impact/run_scene.hpp"
-#include "impact/step_events.hpp"
+#include "impact/methods/capabilities.hpp"
+#include "impact/output/csv.hpp"
+#include "impact/run/run_scene.hpp"
+#include "impact/run/scene.hpp"
+#include "impact/run/step_events.hpp"
 #include "scene/provenance.hpp"
 #include "scene/read_scene.hpp"
 

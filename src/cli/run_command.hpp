@@ -1,5 +1,5 @@
 // `impact run SCENE`: the scene's trajectory as CSV rows, and with --events its impacts, sticks and
-// lifts as CSV rows of their own, each file written whole or not at all (output.hpp), with the
+// lifts as CSV rows of their own, each file written whole or not at all (csv.hpp), with the
 // provenance of the rows in a sidecar OUT.json (provenance.hpp) when they go to a file.
 #pragma once
 

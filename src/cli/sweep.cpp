@@ -11,8 +11,9 @@
 
 #include "cli/progress.hpp"
 #include "cli/sweep_csv.hpp"
-#include "impact/ensemble.hpp"
-#include "impact/output.hpp"
+#include "impact/ensemble/ensemble.hpp"
+#include "impact/output/csv.hpp"
+#include "impact/run/scene.hpp"
 #include "scene/provenance.hpp"
 #include "scene/sweep_engine.hpp"
 #include "scene/sweep_grid.hpp"

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "impact/channels.hpp"
-#include "impact/model.hpp"
-#include "impact/output.hpp"
+#include "impact/model/model.hpp"
+#include "impact/output/channels.hpp"
+#include "impact/output/csv.hpp"
 #include "scene/scene_error.hpp"
 
 namespace impact::cli {

@@ -13,7 +13,7 @@
 
 #include "cli/sweep.hpp"
 #include "cli/sweep_csv.hpp"
-#include "impact/output.hpp"
+#include "impact/output/csv.hpp"
 #include "scene/scene_error.hpp"
 #include "scene/toml_text.hpp"
 

@@ -1,10 +1,10 @@
 // A value on the heap owned by one object and copied with it, for the members of a stepper that
 // cannot live inside it (a table too large to move, a parser that binds variables by address).
 //
-// It exists for the step loop (run.hpp, simulate()): the loop steps a local copy of the stepper,
-// whose members stay in registers only while no out-of-line call receives the local's address.
-// A std::vector or std::unique_ptr member makes the stepper's destructor non-trivial, and GCC
-// does not inline it on the loop's exception path (cold code), so that path calls it with the
+// It exists for the step loop (simulate.hpp, simulate()): the loop steps a local copy of the
+// stepper, whose members stay in registers only while no out-of-line call receives the local's
+// address. A std::vector or std::unique_ptr member makes the stepper's destructor non-trivial, and
+// GCC does not inline it on the loop's exception path (cold code), so that path calls it with the
 // local's address and the whole stepper stays in memory: a harmonic direct step took 4.3 instead
 // of 3.8 ns (AMD EPYC family 26 model 2; 1.75 with a constant force). Here every special member is
 // inlined, and the one out-of-line call, the deletion, receives the heap pointer alone.

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <string>
 
-#include "impact/exact_bonded.hpp"
 #include "impact/format.hpp"
+#include "impact/references/exact_bonded.hpp"
 #include "scene/toml_text.hpp"
 
 namespace impact {

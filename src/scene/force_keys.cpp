@@ -3,9 +3,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "impact/capabilities.hpp"
-#include "impact/force.hpp"
+#include "impact/forces/force.hpp"
 #include "impact/format.hpp"
+#include "impact/methods/capabilities.hpp"
 #include "scene/toml_text.hpp"
 
 namespace impact {

@@ -1,8 +1,8 @@
 // The [force] table of a scene: the body force f(t) of (2-1) as a constant f, plus either a
 // harmonic term amplitude sin(omega t + phase) or a muparser expression of t, or of t and the state
-// u, v (impact/force.hpp evaluates it). Its keys (force_keys(), declared in scene_keys.hpp) join
-// the key table, so that the reader checks them and `impact run --help` prints them; the checks
-// that involve several keys, or the method, are here.
+// u, v (impact/forces/force.hpp evaluates it). Its keys (force_keys(), declared in scene_keys.hpp)
+// join the key table, so that the reader checks them and `impact run --help` prints them; the
+// checks that involve several keys, or the method, are here.
 #pragma once
 
 #include <toml++/toml.h>

@@ -4,8 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "impact/forces/internal.hpp"
 #include "impact/format.hpp"
-#include "impact/internal.hpp"
 #include "scene/scene_error.hpp"
 #include "scene/toml_text.hpp"
 #include "scene/validate.hpp"

@@ -1,5 +1,5 @@
-// The [[internal]] tables of a scene: the model's internal variables (impact/model.hpp), one table
-// each, z' = g(t, u, v, z):
+// The [[internal]] tables of a scene: the model's internal variables (impact/model/model.hpp), one
+// table each, z' = g(t, u, v, z):
 //   [[internal]]
 //   name = "D"          # as force.expression, the rates and output.channels read it
 //   initial = 0.0       # z(0)
@@ -9,7 +9,7 @@
 
 #include <toml++/toml.h>
 
-#include "impact/scene.hpp"
+#include "impact/run/scene.hpp"
 #include "scene/key_reader.hpp"
 
 namespace impact {

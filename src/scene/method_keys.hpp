@@ -5,7 +5,7 @@
 
 #include <toml++/toml.h>
 
-#include "impact/scene.hpp"
+#include "impact/run/scene.hpp"
 #include "scene/key_reader.hpp"
 
 namespace impact {

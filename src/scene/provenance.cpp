@@ -4,8 +4,8 @@
 #include <cmath>
 #include <ctime>
 
-#include "impact/output.hpp"
-#include "impact/processor.hpp"
+#include "impact/ensemble/processor.hpp"
+#include "impact/output/csv.hpp"
 #include "impact/version.hpp"
 #include "scene/resolved_scene.hpp"
 

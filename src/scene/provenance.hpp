@@ -10,8 +10,8 @@
 #include <utility>
 #include <vector>
 
-#include "impact/atomic_file.hpp"
-#include "impact/scene.hpp"
+#include "impact/output/atomic_file.hpp"
+#include "impact/run/scene.hpp"
 
 namespace impact {
 

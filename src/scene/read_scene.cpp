@@ -14,8 +14,8 @@
 #include <limits>
 #include <sstream>
 
+#include "impact/forces/work_energy.hpp"
 #include "impact/format.hpp"
-#include "impact/work_energy.hpp"
 #include "scene/bonding_keys.hpp"
 #include "scene/force_keys.hpp"
 #include "scene/internal_keys.hpp"

@@ -1,7 +1,7 @@
 // The scene reader: a scene file (TOML) and --set overrides into a validated Scene
-// (impact/scene.hpp). A scene states only what it needs; what it leaves out is absent, not zero.
-// Installed with the package as <impact/scene/read_scene.hpp> (the impact::scene target): it and
-// the headers it includes from this directory, by quoted same-directory includes that resolve
+// (impact/run/scene.hpp). A scene states only what it needs; what it leaves out is absent, not
+// zero. Installed with the package as <impact/scene/read_scene.hpp> (the impact::scene target): it
+// and the headers it includes from this directory, by quoted same-directory includes that resolve
 // both here and there, include no toml++.
 #pragma once
 
@@ -10,8 +10,8 @@
 #include <string_view>
 #include <vector>
 
-#include "impact/any_stepper.hpp"
-#include "impact/scene.hpp"
+#include "impact/run/any_stepper.hpp"
+#include "impact/run/scene.hpp"
 #include "scene_error.hpp"
 
 namespace impact {

@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "impact/scene.hpp"
+#include "impact/run/scene.hpp"
 
 namespace impact {
 

@@ -2,7 +2,7 @@
 
 #include <vector>
 
-#include "impact/capabilities.hpp"
+#include "impact/methods/capabilities.hpp"
 #include "scene/scene_keys.hpp"
 #include "scene/toml_text.hpp"
 

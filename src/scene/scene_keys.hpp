@@ -1,6 +1,6 @@
 // Every key a scene may have: its table, type, range and meaning. The reader checks values against
 // these tables and `impact run --help` prints them, so the two cannot disagree. Defaults are not
-// written here: they are those of the plain structs (impact/scene.hpp, each method's Params),
+// written here: they are those of the plain structs (impact/run/scene.hpp, each method's Params),
 // read through each key's accessor.
 #pragma once
 
@@ -14,12 +14,12 @@
 #include <variant>
 #include <vector>
 
-#include "impact/capabilities.hpp"
-#include "impact/scene.hpp"
+#include "impact/methods/capabilities.hpp"
+#include "impact/run/scene.hpp"
 
 namespace impact {
 
-struct Capabilities;  // impact/capabilities.hpp
+struct Capabilities;  // impact/methods/capabilities.hpp
 
 enum class KeyType { number, integer, name, names, text };
 

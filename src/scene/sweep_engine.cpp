@@ -17,8 +17,8 @@
 #include <tuple>
 
 #include "impact/format.hpp"
-#include "impact/run_result.hpp"
-#include "impact/summary.hpp"
+#include "impact/run/run_result.hpp"
+#include "impact/run/summary.hpp"
 
 namespace impact {
 namespace {

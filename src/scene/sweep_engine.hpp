@@ -31,7 +31,7 @@ inline std::int64_t shard_point(const Shard& shard, std::int64_t position) {
 // A caller's way to stop a sweep (the Python module's Ctrl-C): `poll`, when given, is called by
 // the calling thread at least every 20 ms while it waits, and what it throws leaves the sweep;
 // `stop`, set by it, is read by every thread between points and every `poll_steps` steps inside
-// them (Interrupted, run.hpp), so that the threads stop too.
+// them (Interrupted, simulate.hpp), so that the threads stop too.
 struct SweepPoll {
   std::function<void()> poll;
   const std::atomic<bool>* stop = nullptr;

@@ -12,7 +12,7 @@
 #include <string_view>
 #include <vector>
 
-#include "impact/scene.hpp"
+#include "impact/run/scene.hpp"
 #include "read_scene.hpp"
 #include "scene_error.hpp"
 

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "impact/channels.hpp"
-#include "impact/model.hpp"
+#include "impact/model/model.hpp"
+#include "impact/output/channels.hpp"
 #include "scene/scene_error.hpp"
 
 namespace impact {

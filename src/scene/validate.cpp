@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "impact/force.hpp"
+#include "impact/forces/force.hpp"
+#include "impact/forces/work_energy.hpp"
 #include "impact/format.hpp"
-#include "impact/work_energy.hpp"
 
 namespace impact {
 

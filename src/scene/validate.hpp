@@ -9,7 +9,7 @@
 #include <string>
 #include <string_view>
 
-#include "impact/scene.hpp"
+#include "impact/run/scene.hpp"
 #include "scene/scene_keys.hpp"
 
 namespace impact {

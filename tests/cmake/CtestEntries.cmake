@@ -8,7 +8,7 @@
 # Input: CTEST_COMMAND, CTEST_DIR, EXECUTABLE_DIR, SOURCES_DIR. Prints one line per defect to
 # standard error and fails when there is one; prints the counts otherwise. An entry is named
 # "test_x:<test case>" (catch_discover_tests's TEST_PREFIX), except python_module (pytest) and
-# rooms (.ci/rooms.py).
+# rooms and layers (.ci/rooms.py, .ci/layers.py).
 include("${CMAKE_CURRENT_LIST_DIR}/CatchNameList.cmake")
 execute_process(COMMAND "${CTEST_COMMAND}" --show-only=json-v1 WORKING_DIRECTORY "${CTEST_DIR}"
                 OUTPUT_VARIABLE json RESULT_VARIABLE result ERROR_VARIABLE errors)
@@ -26,8 +26,9 @@ if(entry_count GREATER 0)
     string(JSON entry GET "${tests}" ${i})
     string(JSON entry_name GET "${entry}" name)
     # The entries that are not Catch2 test cases: the Python module's pytest suite
-    # (python/CMakeLists.txt) and the include-cycle check (tests/CMakeLists.txt).
-    if(entry_name STREQUAL "python_module" OR entry_name STREQUAL "rooms")
+    # (python/CMakeLists.txt), the include-cycle and the layers checks (tests/CMakeLists.txt).
+    if(entry_name STREQUAL "python_module" OR entry_name STREQUAL "rooms" OR
+       entry_name STREQUAL "layers")
       continue()
     endif()
     string(JSON argc ERROR_VARIABLE no_command LENGTH "${entry}" command)

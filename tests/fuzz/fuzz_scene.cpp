@@ -15,9 +15,10 @@
 #include <string_view>
 #include <vector>
 
-#include "impact/any_stepper.hpp"
-#include "impact/output.hpp"
-#include "impact/run.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/output/csv.hpp"
+#include "impact/run/any_stepper.hpp"
+#include "impact/run/scene.hpp"
 #include "scene/read_scene.hpp"
 
 namespace {

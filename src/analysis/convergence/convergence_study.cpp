@@ -7,10 +7,10 @@
 
 #include "analysis/order_table.hpp"
 #include "analysis/path_distance.hpp"
-#include "impact/exact.hpp"
-#include "impact/output.hpp"
-#include "impact/run.hpp"
-#include "impact/scene.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/output/csv.hpp"
+#include "impact/references/exact.hpp"
+#include "impact/run/scene.hpp"
 
 namespace impact::convergence {
 

@@ -26,8 +26,8 @@
 #include "analysis/experiment.hpp"
 #include "analysis/fit.hpp"
 #include "analysis/step_sweep.hpp"
-#include "impact/capabilities.hpp"
-#include "impact/model.hpp"
+#include "impact/methods/capabilities.hpp"
+#include "impact/model/model.hpp"
 
 namespace impact::convergence {
 

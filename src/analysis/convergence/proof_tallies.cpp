@@ -4,7 +4,7 @@
 #include <type_traits>
 #include <variant>
 
-#include "impact/any_stepper.hpp"
+#include "impact/run/any_stepper.hpp"
 
 namespace impact::convergence {
 

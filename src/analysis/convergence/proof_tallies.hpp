@@ -11,10 +11,10 @@
 #include <optional>
 #include <vector>
 
-#include "impact/contact.hpp"
-#include "impact/error_norms.hpp"
-#include "impact/model.hpp"
-#include "impact/scene.hpp"
+#include "impact/model/contact.hpp"
+#include "impact/model/model.hpp"
+#include "impact/run/error_norms.hpp"
+#include "impact/run/scene.hpp"
 
 namespace impact::convergence {
 

@@ -4,10 +4,10 @@
 #include <numbers>
 
 #include "analysis/error_analysis/error_campaign.hpp"
-#include "impact/any_stepper.hpp"
-#include "impact/error_norms.hpp"
-#include "impact/exact.hpp"
-#include "impact/run.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/references/exact.hpp"
+#include "impact/run/any_stepper.hpp"
+#include "impact/run/error_norms.hpp"
 
 namespace impact::error_analysis {
 namespace {

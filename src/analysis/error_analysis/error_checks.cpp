@@ -5,10 +5,10 @@
 #include <cmath>
 
 #include "analysis/error_analysis/error_bounds.hpp"
-#include "impact/contact.hpp"
-#include "impact/contact_law.hpp"
-#include "impact/direct_located.hpp"
-#include "impact/scheme_flight.hpp"
+#include "impact/forces/scheme_flight.hpp"
+#include "impact/model/contact.hpp"
+#include "impact/model/contact_law.hpp"
+#include "impact/steppers/direct_located.hpp"
 
 namespace impact::error_analysis {
 namespace {

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "analysis/error_analysis/error_campaign.hpp"
-#include "impact/model.hpp"
+#include "impact/model/model.hpp"
 
 namespace impact::error_analysis {
 

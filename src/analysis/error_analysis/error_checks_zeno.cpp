@@ -7,9 +7,9 @@
 
 #include "analysis/error_analysis/error_bounds.hpp"
 #include "analysis/error_analysis/error_checks.hpp"
-#include "impact/contact.hpp"
-#include "impact/direct_located.hpp"
-#include "impact/exact.hpp"
+#include "impact/model/contact.hpp"
+#include "impact/references/exact.hpp"
+#include "impact/steppers/direct_located.hpp"
 
 namespace impact::error_analysis {
 namespace {

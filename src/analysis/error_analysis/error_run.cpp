@@ -6,7 +6,7 @@
 #include <map>
 #include <thread>
 
-#include "impact/exact.hpp"
+#include "impact/references/exact.hpp"
 
 namespace impact::error_analysis {
 namespace {

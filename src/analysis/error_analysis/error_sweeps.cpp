@@ -11,7 +11,7 @@
 #include "analysis/error_analysis/error_run.hpp"
 #include "analysis/fit.hpp"
 #include "analysis/work_precision_curves.hpp"
-#include "impact/error_norms.hpp"
+#include "impact/run/error_norms.hpp"
 #include "scene/read_scene.hpp"
 
 namespace impact::error_analysis {

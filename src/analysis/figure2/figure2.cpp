@@ -8,7 +8,7 @@
 #include <utility>
 
 #include "analysis/spline_contact.hpp"
-#include "impact/output.hpp"
+#include "impact/output/csv.hpp"
 
 namespace impact::figure2 {
 namespace {

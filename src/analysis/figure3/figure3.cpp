@@ -5,8 +5,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "impact/capabilities.hpp"
-#include "impact/output.hpp"
+#include "impact/methods/capabilities.hpp"
+#include "impact/output/csv.hpp"
+#include "impact/run/scene.hpp"
 #include "scene/read_scene.hpp"
 
 namespace impact::figure3 {

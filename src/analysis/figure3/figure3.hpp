@@ -12,7 +12,7 @@
 
 #include "analysis/experiment.hpp"
 #include "analysis/rest.hpp"
-#include "impact/scene.hpp"
+#include "impact/run/scene.hpp"
 
 namespace impact::figure3 {
 

@@ -8,8 +8,9 @@
 #include <string>
 
 #include "analysis/fit.hpp"
-#include "impact/exact.hpp"
-#include "impact/output.hpp"
+#include "impact/output/csv.hpp"
+#include "impact/references/exact.hpp"
+#include "impact/run/scene.hpp"
 #include "scene/read_scene.hpp"
 
 namespace impact::figure4 {

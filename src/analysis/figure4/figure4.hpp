@@ -14,7 +14,7 @@
 #include "analysis/experiment.hpp"
 #include "analysis/figure4/figure4_readings.hpp"
 #include "analysis/rest.hpp"
-#include "impact/scene.hpp"
+#include "impact/run/scene.hpp"
 
 namespace impact::figure4 {
 

@@ -8,10 +8,11 @@
 #include <string>
 
 #include "analysis/fit.hpp"
-#include "impact/contact_law.hpp"
-#include "impact/direct.hpp"
-#include "impact/output.hpp"
-#include "impact/run.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/model/contact_law.hpp"
+#include "impact/output/csv.hpp"
+#include "impact/run/scene.hpp"
+#include "impact/steppers/direct.hpp"
 
 namespace impact::figure4 {
 

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "analysis/rest.hpp"
-#include "impact/scene.hpp"
+#include "impact/run/scene.hpp"
 
 namespace impact::figure4 {
 

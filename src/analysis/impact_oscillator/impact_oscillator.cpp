@@ -7,8 +7,8 @@
 
 #include "analysis/impact_oscillator/oscillator_law.hpp"
 #include "analysis/impact_oscillator/oscillator_orbits.hpp"
+#include "impact/ensemble/processor.hpp"
 #include "impact/format.hpp"
-#include "impact/processor.hpp"
 
 namespace impact::impact_oscillator {
 

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "analysis/impact_oscillator/oscillator_theory.hpp"
-#include "impact/event.hpp"
+#include "impact/model/event.hpp"
 
 namespace impact::impact_oscillator {
 

@@ -10,7 +10,7 @@
 
 #include "analysis/fit.hpp"
 #include "analysis/impact_oscillator/oscillator_theory.hpp"
-#include "impact/event.hpp"
+#include "impact/model/event.hpp"
 
 namespace impact::impact_oscillator {
 

@@ -4,9 +4,9 @@
 #include <limits>
 #include <numbers>
 
-#include "impact/any_stepper.hpp"
-#include "impact/run_scene.hpp"
-#include "impact/scene.hpp"
+#include "impact/run/any_stepper.hpp"
+#include "impact/run/run_scene.hpp"
+#include "impact/run/scene.hpp"
 
 namespace impact::impact_oscillator {
 

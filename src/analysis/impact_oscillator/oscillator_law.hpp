@@ -10,10 +10,10 @@
 #include <vector>
 
 #include "analysis/impact_oscillator/oscillator_theory.hpp"
-#include "impact/event.hpp"
-#include "impact/flight_search.hpp"
-#include "impact/linear_flight.hpp"
-#include "impact/linear_law.hpp"
+#include "impact/model/event.hpp"
+#include "impact/references/flight_search.hpp"
+#include "impact/references/linear_flight.hpp"
+#include "impact/references/linear_law.hpp"
 
 namespace impact::impact_oscillator {
 

@@ -20,8 +20,8 @@
 #include <array>
 #include <optional>
 
-#include "impact/linear_flight.hpp"
-#include "impact/model.hpp"
+#include "impact/model/model.hpp"
+#include "impact/references/linear_flight.hpp"
 
 namespace impact::impact_oscillator {
 

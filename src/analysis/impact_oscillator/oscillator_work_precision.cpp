@@ -6,9 +6,9 @@
 #include <stdexcept>
 
 #include "analysis/impact_oscillator/oscillator_law.hpp"
-#include "impact/any_stepper.hpp"
 #include "impact/format.hpp"
-#include "impact/run.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/run/any_stepper.hpp"
 
 namespace impact::impact_oscillator {
 

@@ -15,7 +15,7 @@
 #include "analysis/fit.hpp"
 #include "analysis/impact_oscillator/oscillator_theory.hpp"
 #include "analysis/work_precision.hpp"
-#include "impact/scene.hpp"
+#include "impact/run/scene.hpp"
 
 namespace impact::impact_oscillator {
 

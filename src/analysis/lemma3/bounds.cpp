@@ -5,7 +5,7 @@
 #include <limits>
 
 #include "analysis/tolerances.hpp"
-#include "impact/run.hpp"
+#include "impact/loop/simulate.hpp"
 
 namespace impact::lemma3 {
 

@@ -16,8 +16,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "impact/any_stepper.hpp"
-#include "impact/model.hpp"
+#include "impact/model/model.hpp"
+#include "impact/run/any_stepper.hpp"
 
 namespace impact::lemma3 {
 

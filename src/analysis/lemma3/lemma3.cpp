@@ -7,7 +7,7 @@
 #include "analysis/lemma3/bounds.hpp"
 #include "analysis/lemma3/lemma3_forcing.hpp"
 #include "analysis/lemma3/lemma3_forcing_report.hpp"
-#include "impact/output.hpp"
+#include "impact/output/csv.hpp"
 
 namespace impact::lemma3 {
 

@@ -6,8 +6,8 @@
 #include <stdexcept>
 
 #include "analysis/quadrature.hpp"
-#include "impact/force.hpp"
-#include "impact/run.hpp"
+#include "impact/forces/force.hpp"
+#include "impact/loop/simulate.hpp"
 
 namespace impact::lemma3 {
 

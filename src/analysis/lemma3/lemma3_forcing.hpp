@@ -31,8 +31,8 @@
 
 #include "analysis/energy_forcing.hpp"
 #include "analysis/lemma3/bounds.hpp"
-#include "impact/capabilities.hpp"
-#include "impact/model.hpp"
+#include "impact/methods/capabilities.hpp"
+#include "impact/model/model.hpp"
 
 namespace impact::lemma3 {
 

@@ -3,7 +3,7 @@
 #include <sstream>
 #include <string_view>
 
-#include "impact/output.hpp"
+#include "impact/output/csv.hpp"
 
 namespace impact::lemma3 {
 

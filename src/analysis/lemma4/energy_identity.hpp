@@ -2,8 +2,8 @@
 // and the terms the proof drops on the way.
 #pragma once
 
-#include "impact/exact.hpp"
-#include "impact/model.hpp"
+#include "impact/model/model.hpp"
+#include "impact/references/exact.hpp"
 
 namespace impact::lemma4 {
 

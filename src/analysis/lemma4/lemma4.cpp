@@ -8,11 +8,11 @@
 #include "analysis/lemma4/weak_solution.hpp"
 #include "analysis/order_table.hpp"
 #include "analysis/path_distance.hpp"
-#include "impact/any_stepper.hpp"
-#include "impact/contact_law.hpp"
-#include "impact/exact.hpp"
-#include "impact/output.hpp"
-#include "impact/scene.hpp"
+#include "impact/model/contact_law.hpp"
+#include "impact/output/csv.hpp"
+#include "impact/references/exact.hpp"
+#include "impact/run/any_stepper.hpp"
+#include "impact/run/scene.hpp"
 
 namespace impact::lemma4 {
 

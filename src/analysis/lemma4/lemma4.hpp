@@ -29,7 +29,7 @@
 #include "analysis/fit.hpp"
 #include "analysis/lemma4/energy_identity.hpp"
 #include "analysis/step_sweep.hpp"
-#include "impact/model.hpp"
+#include "impact/model/model.hpp"
 
 namespace impact::lemma4 {
 

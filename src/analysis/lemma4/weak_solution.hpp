@@ -4,8 +4,8 @@
 // asks whether it has one solution only.
 #pragma once
 
-#include "impact/exact.hpp"
-#include "impact/model.hpp"
+#include "impact/model/model.hpp"
+#include "impact/references/exact.hpp"
 
 namespace impact::lemma4 {
 

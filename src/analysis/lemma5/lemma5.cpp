@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "analysis/spline_contact.hpp"
-#include "impact/output.hpp"
+#include "impact/output/csv.hpp"
 
 namespace impact::lemma5 {
 namespace {

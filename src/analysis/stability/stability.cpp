@@ -5,10 +5,10 @@
 #include <optional>
 #include <stdexcept>
 
-#include "impact/any_stepper.hpp"
-#include "impact/exact.hpp"
-#include "impact/fb_newton.hpp"
-#include "impact/run.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/references/exact.hpp"
+#include "impact/run/any_stepper.hpp"
+#include "impact/steppers/fb_newton.hpp"
 
 namespace impact::stability {
 namespace {

@@ -12,7 +12,7 @@
 #include <string>
 #include <string_view>
 
-#include "impact/scene.hpp"
+#include "impact/run/scene.hpp"
 
 namespace impact::stability {
 

@@ -3,8 +3,9 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "impact/capabilities.hpp"
-#include "impact/output.hpp"
+#include "impact/methods/capabilities.hpp"
+#include "impact/output/csv.hpp"
+#include "impact/run/scene.hpp"
 
 namespace impact::stability {
 namespace {

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "analysis/stability/stability_runs.hpp"
-#include "impact/scene.hpp"
+#include "impact/run/scene.hpp"
 
 namespace impact::stability {
 

@@ -2,9 +2,9 @@
 
 #include <numbers>
 
-#include "impact/any_stepper.hpp"
-#include "impact/penalty.hpp"
-#include "impact/run.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/run/any_stepper.hpp"
+#include "impact/steppers/penalty.hpp"
 
 namespace impact::stability {
 

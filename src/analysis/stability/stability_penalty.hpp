@@ -7,7 +7,7 @@
 #include <string>
 
 #include "analysis/stability/stability_runs.hpp"
-#include "impact/scene.hpp"
+#include "impact/run/scene.hpp"
 
 namespace impact::stability {
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "analysis/stability/stability.hpp"
-#include "impact/scene.hpp"
+#include "impact/run/scene.hpp"
 
 namespace impact::stability {
 

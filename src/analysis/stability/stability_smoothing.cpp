@@ -5,8 +5,9 @@
 #include <optional>
 
 #include "analysis/stability/stability_cases.hpp"
-#include "impact/fb_newton.hpp"
-#include "impact/output.hpp"
+#include "impact/output/csv.hpp"
+#include "impact/run/scene.hpp"
+#include "impact/steppers/fb_newton.hpp"
 
 namespace impact::stability {
 namespace {

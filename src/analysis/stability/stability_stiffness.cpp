@@ -3,7 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "impact/output.hpp"
+#include "impact/output/csv.hpp"
+#include "impact/run/scene.hpp"
 
 namespace impact::stability {
 namespace {

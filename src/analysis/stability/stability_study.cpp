@@ -6,7 +6,7 @@
 #include "analysis/stability/stability_smoothing.hpp"
 #include "analysis/stability/stability_stiffness.hpp"
 #include "analysis/stability/stability_table.hpp"
-#include "impact/processor.hpp"
+#include "impact/ensemble/processor.hpp"
 
 namespace impact::stability {
 namespace {

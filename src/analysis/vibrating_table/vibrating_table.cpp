@@ -9,7 +9,7 @@
 
 #include "analysis/fit.hpp"
 #include "analysis/vibrating_table/vibrating_table_theory.hpp"
-#include "impact/output.hpp"
+#include "impact/output/csv.hpp"
 
 namespace impact::vibrating_table {
 

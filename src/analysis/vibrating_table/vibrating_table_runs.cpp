@@ -7,9 +7,10 @@
 #include <string>
 
 #include "analysis/vibrating_table/vibrating_table_theory.hpp"
-#include "impact/output.hpp"
-#include "impact/run.hpp"
-#include "impact/run_scene.hpp"
+#include "impact/loop/simulate.hpp"
+#include "impact/output/csv.hpp"
+#include "impact/run/run_scene.hpp"
+#include "impact/run/scene.hpp"
 
 namespace impact::vibrating_table {
 

@@ -12,9 +12,9 @@
 #include <string_view>
 #include <vector>
 
-#include "impact/capabilities.hpp"
-#include "impact/event.hpp"
-#include "impact/model.hpp"
+#include "impact/methods/capabilities.hpp"
+#include "impact/model/event.hpp"
+#include "impact/model/model.hpp"
 
 namespace impact::vibrating_table {
 

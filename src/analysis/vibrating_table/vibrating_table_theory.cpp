@@ -11,9 +11,9 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "impact/force.hpp"
-#include "impact/gsl_errors.hpp"
-#include "impact/model.hpp"
+#include "impact/forces/force.hpp"
+#include "impact/forces/gsl_errors.hpp"
+#include "impact/model/model.hpp"
 
 namespace impact::vibrating_table {
 

@@ -8,8 +8,9 @@
 #include "analysis/markdown.hpp"
 #include "analysis/work_precision/work_precision_report.hpp"
 #include "analysis/work_precision_lyapunov.hpp"
-#include "impact/exact.hpp"
-#include "impact/output.hpp"
+#include "impact/output/csv.hpp"
+#include "impact/references/exact.hpp"
+#include "impact/run/scene.hpp"
 
 namespace impact::work_precision {
 namespace {

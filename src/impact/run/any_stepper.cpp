@@ -1,0 +1,72 @@
+#include "impact/run/any_stepper.hpp"
+
+#include <stdexcept>
+#include <string>
+#include <variant>
+
+#include "impact/forces/force.hpp"
+#include "impact/run/step_events.hpp"
+
+namespace impact {
+
+AnyStepper make_stepper(const Model& given, double h, const MethodParams& params) {
+  if (const auto refused = refusal(params, given, h)) throw std::invalid_argument(refused->message);
+  // exact follows a linear force in closed form; the others take it as the force of the state it
+  // is, an expression (force.hpp).
+  const Model model =
+      std::holds_alternative<ExactParams>(params) ? given : linear_as_expression(given);
+  // The law the method applies, read from the model once (capabilities.hpp) and given to the
+  // time-steppers; exact and event_driven read Newton's law themselves, as their references do.
+  const ContactLaw law = contact_law(model, params);
+  return std::visit(
+      [&](const auto& p) -> AnyStepper {
+        using Params = std::decay_t<decltype(p)>;
+        if constexpr (std::is_same_v<Params, DirectParams>) {
+          if (p.free_flight == FreeFlightForm::paper) return DirectAsPrinted(model, law, h, p);
+          if (!model.internal.empty()) return DirectInternal(model, law, h, p);
+          switch (force_kind(model)) {
+            case ForceKind::constant:
+              return Direct(model, law, h, p);
+            case ForceKind::harmonic:
+              return DirectHarmonic(model, law, h, p);
+            case ForceKind::time_dependent:
+              break;
+          }
+          return DirectTimeDependent(model, law, h, p);
+        }
+        if constexpr (std::is_same_v<Params, FbNewtonParams>) return FbNewton(model, law, h, p);
+        if constexpr (std::is_same_v<Params, MoreauJeanParams>) {
+          if (!model.internal.empty()) return MoreauJeanInternal(model, law, h, p);
+          if (constant_force(model)) return MoreauJean(model, law, h, p);
+          return MoreauJeanTimeDependent(model, law, h, p);
+        }
+        if constexpr (std::is_same_v<Params, PenaltyParams>) return Penalty(model, law, h, p);
+        if constexpr (std::is_same_v<Params, ExactParams>) {
+          if (bonded(model)) return ExactBonded(model, h, p);
+          return ExactStepper(model, h, p);
+        }
+        if constexpr (std::is_same_v<Params, EventDrivenParams>) {
+          if (!model.internal.empty() || bonded(model)) return EventDrivenInternal(model, h, p);
+          return EventDriven(model, h, p);
+        }
+        if constexpr (std::is_same_v<Params, DirectLocatedParams>)
+          return DirectLocated(model, law, h, p);
+      },
+      params);
+}
+
+AnyStepper make_stepper(const Scene& scene) {
+  AnyStepper stepper = make_stepper(scene.model, scene.grid.h, scene.method);
+  // A force expression need only be defined up to the scene's end: event_driven looks no further.
+  if (auto* event_driven = std::get_if<EventDriven>(&stepper))
+    event_driven->set_end(scene.grid.end());
+  if (auto* event_driven = std::get_if<EventDrivenInternal>(&stepper))
+    event_driven->set_end(scene.grid.end());
+  return stepper;
+}
+
+bool attach_event_sink(AnyStepper& stepper, const EventSink& sink) {
+  return std::visit([&](auto& s) { return attach_event_sink(s, sink); }, stepper);
+}
+
+}  // namespace impact

@@ -1,0 +1,64 @@
+// A time-stepper that follows the model's internal variables (model.hpp, internal.hpp) beside the
+// particle: its state is StateWithInternal (StateOf, stepper.hpp), and every observer of a run
+// sees z with u and v (rows, summary, errors, events).
+//
+// A step from t_l: the particle's step of the base method with its force of the state read at
+// (u^l, v^l, z^l) (the explicit reading of scheme_flight.hpp), then
+//   z^{l+1} = z^l + h g(t_l, u^l, v^l, z^l),
+// explicit Euler: a local error O(h^2), first order over a run, as the force of the state is; an
+// impact changes v alone, so z is continuous across it, and a rate read at a step's start does not
+// see a contact inside the step (an error O(h) there, again first order). The base method is one
+// whose force of the state is taken at the step's start (set_internal): direct and moreau_jean.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "impact/forces/internal.hpp"
+#include "impact/methods/capabilities.hpp"
+#include "impact/model/model.hpp"
+
+namespace impact {
+
+template <class Base>
+class WithInternal {
+ public:
+  using StateType = StateWithInternal;
+
+  template <class Params>
+  WithInternal(const Model& model, double h, const Params& params)
+      : WithInternal(model, contact_law(model, MethodParams(params)), h, params) {}
+  template <class Params>
+  WithInternal(const Model& model, const ContactLaw& law, double h, const Params& params)
+      : base_(model, law, h, params),
+        rates_(model),
+        model_internal_(with_internal(model, {}).z),
+        h_(h) {}
+
+  // The full initial state of a run from the particle's: z at the model's initial values.
+  StateWithInternal initial_state(const State& s) const { return {s, model_internal_}; }
+
+  void initialize(const StateWithInternal& s, std::int64_t l) {
+    base_.set_internal(s.z);
+    base_.initialize(s, l);
+  }
+
+  StepInfo do_step(StateWithInternal& s, std::int64_t l) {
+    std::array<double, kMaxInternal> rate{};
+    rates_.evaluate(static_cast<double>(l) * h_, s, rate);
+    base_.set_internal(s.z);
+    State particle = s;
+    const StepInfo info = base_.do_step(particle, l);
+    static_cast<State&>(s) = particle;
+    for (std::size_t i = 0; i < rates_.size(); ++i) s.z[i] += h_ * rate[i];
+    return info;
+  }
+
+ private:
+  Base base_;
+  InternalRates rates_;
+  std::array<double, kMaxInternal> model_internal_;
+  double h_;
+};
+
+}  // namespace impact
