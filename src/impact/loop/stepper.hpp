@@ -1,5 +1,5 @@
 // The stepper interface, in the spirit of Boost.Odeint's steppers, as concepts:
-//   S(const Model&, double h, const Params&);      // throws std::invalid_argument on bad params
+//   S(const Model&, [const ContactLaw&,] double h, const Params&);  // the law: time-steppers
 //   void initialize(const State& s, std::int64_t l); // (re)start at t_l = l h from s
 //   StepInfo do_step(State& s, std::int64_t l);      // s: the state at t_l that the stepper
 //                                                    // produced (or was initialized with);
