@@ -141,11 +141,11 @@ TEST_CASE("A copied stepper with a slow harmonic force steps as the original, bi
     const Model m = table(omega, 0.3);
     const impact::DirectHarmonic direct(m, grid.h, impact::DirectParams{});
     const impact::FbNewton fb_newton(m, grid.h, impact::FbNewtonParams{});
-    const impact::MoreauJeanTimeDependent moreau_jean(m, grid.h, impact::MoreauJeanParams{});
+    const impact::MoreauJeanHarmonic moreau_jean(m, grid.h, impact::MoreauJeanParams{});
     const auto copy_of = [](const auto& stepper) { return stepper; };
     CHECK(max_distance(run(copy_of(direct)), run(impact::DirectHarmonic(m, grid.h, {}))) == 0);
     CHECK(max_distance(run(copy_of(fb_newton)), run(impact::FbNewton(m, grid.h, {}))) == 0);
-    CHECK(max_distance(run(copy_of(moreau_jean)),
-                       run(impact::MoreauJeanTimeDependent(m, grid.h, {}))) == 0);
+    CHECK(max_distance(run(copy_of(moreau_jean)), run(impact::MoreauJeanHarmonic(m, grid.h, {}))) ==
+          0);
   }
 }

@@ -169,3 +169,47 @@ TEST_CASE("state force: impact run writes the library's trajectory for each meth
                            {0, 1, 2, 3, 4}) == "");
   }
 }
+
+TEST_CASE(
+    "state force: the force kind picks the stepper, and a failure names z only where there is z",
+    "[force][regression]") {
+  const auto stepper_for = [](const Model& model, const MethodParams& params) {
+    return make_stepper(model, 1e-3, params);
+  };
+  Model constant;
+  Model harmonic;
+  harmonic.harmonic = Harmonic{1.0, 2.0, 0.0};
+  Model internal;
+  internal.internal = {{"z", 1.0, "-z"}};
+  // One type per kind: a force of the state, of t or internal variables are all the general kind.
+  CHECK(std::holds_alternative<Direct>(stepper_for(constant, DirectParams{})));
+  CHECK(std::holds_alternative<MoreauJean>(stepper_for(constant, MoreauJeanParams{})));
+  CHECK(std::holds_alternative<DirectHarmonic>(stepper_for(harmonic, DirectParams{})));
+  CHECK(std::holds_alternative<MoreauJeanHarmonic>(stepper_for(harmonic, MoreauJeanParams{})));
+  for (const Model& general : {oscillator(), internal}) {
+    CHECK(std::holds_alternative<DirectGeneral>(stepper_for(general, DirectParams{})));
+    CHECK(std::holds_alternative<MoreauJeanGeneral>(stepper_for(general, MoreauJeanParams{})));
+  }
+  // The general kind steps z even where there is none; its failure message names u and v alone,
+  // as it did when such a force was stepped with (u, v) only.
+  const auto failure = [](const Model& model, const MethodParams& params) {
+    AnyStepper stepper = make_stepper(model, 1e-3, params);
+    try {
+      simulate(stepper, State{1.0, 0.0}, Grid::covering(40.0, 1e-3),
+               [](std::int64_t, const State&, const StepInfo&) {});
+    } catch (const NumericalError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no failure");
+  };
+  Model overflow;
+  overflow.expression = "1e307 + 1e300 * t";  // v passes the double range near t = 6
+  Model overflow_z;
+  overflow_z.internal = {{"z", 1.0, "1e307"}};  // z does near t = 18
+  for (const MethodParams& params :
+       {MethodParams(DirectParams{}), MethodParams(MoreauJeanParams{})}) {
+    const std::string message = failure(overflow, params);
+    CHECK_THAT(message, Contains("non-finite result u = inf, v = ") && !Contains("z = ("));
+    CHECK_THAT(failure(overflow_z, params), Contains("z = (inf, 0, 0, 0)"));
+  }
+}

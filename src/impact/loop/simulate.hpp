@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <concepts>
+#include <cstddef>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -53,6 +54,14 @@ struct RunSummary {
                                                                StepInfo info,
                                                                const std::string& detail);
 
+// A stepper of StateWithInternal that says how many internal variables it follows (the general
+// force kind, with_internal.hpp; event_driven): with none, a failure names u and v alone, as one
+// of State does.
+template <class S>
+concept CountsInternal = requires(const S& stepper) {
+  { stepper.internal_count() } -> std::convertible_to<std::size_t>;
+};
+
 // The same with the stepper's own account of a solve that did not converge, for a stepper that
 // gives one (ExplainsFailure).
 template <class S, class St>
@@ -66,6 +75,9 @@ template <class S, class St>
     std::string detail;
     if constexpr (ExplainsFailure<S>)
       if (!info.converged) detail = stepper.failure_reason();
+    if constexpr (CountsInternal<S>)
+      if (stepper.internal_count() == 0)
+        throw_step_failure(l, t, static_cast<const State&>(s), info, detail);
     throw_step_failure(l, t, describe(s), info, detail);
   }
 }
@@ -75,12 +87,19 @@ namespace detail {
 // Stands for a stepper that gives no account of a failure, so that the step loop's cold path
 // gets no reference to a stepper that has nothing to say (see simulate() on addresses).
 struct NoAccount {};
+// The same for one that gives its internal variables' count alone (CountsInternal), by value.
+struct InternalCount {
+  std::size_t n;
+  std::size_t internal_count() const { return n; }
+};
 
 template <class S, class St>
 [[noreturn, gnu::always_inline]] inline void fail_step(const S& stepper, std::int64_t l, double t,
                                                        const St& s, const StepInfo& info) {
   if constexpr (ExplainsFailure<S>)
     throw_step_failure(stepper, l, t, s, info);
+  else if constexpr (CountsInternal<S>)
+    throw_step_failure(InternalCount{stepper.internal_count()}, l, t, s, info);
   else
     throw_step_failure(NoAccount{}, l, t, s, info);
 }

@@ -93,7 +93,8 @@ inline bool constant_force(const Model& model) {
 
 // The particle's state with the model's internal variables z_1..z_m (m = model.internal.size(),
 // the rest of the array zero): the state of a stepper that follows them (StateOf, stepper.hpp).
-// A model without internal variables is stepped with State alone, at no cost.
+// A constant or harmonic force without internal variables is stepped with State alone; the
+// general force kind (force.hpp) and event_driven step this state with or without them.
 struct StateWithInternal : State {
   std::array<double, kMaxInternal> z{};
   bool finite() const {

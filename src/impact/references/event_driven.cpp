@@ -19,7 +19,11 @@ void check_range(const char* key, double value, double hi) {
 }  // namespace
 
 EventDriven::EventDriven(const Model& model, double h, const EventDrivenParams& params)
-    : model_(model), h_(h), params_(params), settings_{params.rtol, params.atol, params.max_step} {
+    : model_(model),
+      h_(h),
+      params_(params),
+      settings_{params.rtol, params.atol, params.max_step},
+      internal_count_(model.internal.size() + (bonded(model) ? 2 : 0)) {
   check_range("rtol", params.rtol, 1e-3);
   check_range("atol", params.atol, 1e-3);
   check_range("max_step", params.max_step, 1e300);
@@ -31,26 +35,23 @@ EventDriven::EventDriven(const Model& model, double h, const EventDrivenParams& 
   const ForceFunction parses(model);
 }
 
-void EventDriven::initialize(const State& s, std::int64_t l) {
-  start(s, l, with_internal(model_, s).z);
-}
-
-void EventDriven::start(const State& s, std::int64_t l, const std::array<double, kMaxInternal>& z) {
+void EventDriven::initialize(const StateWithInternal& s, std::int64_t l) {
   l0_ = l;
   OdeLaw law(model_, settings_);
-  law.set_internal(z);
+  law.set_internal(s.z);
   track_.emplace(std::move(law), model_, s, static_cast<double>(l) * h_);
   track_->set_event_sink(sink_);
 }
 
-StepInfo EventDriven::do_step(State& s, std::int64_t l) {
+StepInfo EventDriven::do_step(StateWithInternal& s, std::int64_t l) {
   event_limit_ = run_budget(params_.max_events, l + 1 - l0_);
   track_->set_event_limit(event_limit_);
   track_->law().set_ode_step_limit(
       static_cast<long>(run_budget(params_.max_ode_steps, l + 1 - l0_)));
   StepInfo info;
   double impulse = 0.0;
-  s = track_->advance(static_cast<double>(l + 1) * h_, impulse);
+  static_cast<State&>(s) = track_->advance(static_cast<double>(l + 1) * h_, impulse);
+  if (internal_count_ > 0) s.z = track_->law().internal_at(static_cast<double>(l + 1) * h_);
   info.contact_force = impulse / h_;
   info.converged = track_->converged();
   return info;

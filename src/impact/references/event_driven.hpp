@@ -5,7 +5,7 @@
 // reference for an expression force, as exact is for a constant or harmonic one.
 #pragma once
 
-#include <array>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -18,14 +18,21 @@
 
 namespace impact {
 
+// The state it steps is StateWithInternal: the model's internal variables (model.hpp) or a
+// bonding field's beta and D, integrated with the flight and on the floor (ode_flight.hpp) and
+// sampled with u and v; the ODE has 2 + m equations, m = 0 without them (z then stays zero).
 class EventDriven {
  public:
+  using StateType = StateWithInternal;
+
   // Throws std::invalid_argument for parameters out of range or an expression that does not parse.
   EventDriven(const Model& model, double h, const EventDrivenParams& params);
 
-  void initialize(const State& s, std::int64_t l);
+  // The full initial state of a run from the particle's: z at the model's initial values.
+  StateWithInternal initial_state(const State& s) const { return with_internal(model_, s); }
+  void initialize(const StateWithInternal& s, std::int64_t l);
   // Samples the solution at t_{l+1} = (l + 1) h; N^l = impulse in (t_l, t_{l+1}] / h.
-  StepInfo do_step(State& s, std::int64_t l);
+  StepInfo do_step(StateWithInternal& s, std::int64_t l);
   // Receives the impacts, sticks and lifts in increasing t as the samples pass them.
   void set_event_sink(EventSink sink);
   // The end of the run (make_stepper of a scene sets it): f is evaluated up to it and no further
@@ -35,44 +42,19 @@ class EventDriven {
   // Why the last step did not converge: the budget that was used up, the ODE step that failed or
   // the contact search that stalled, with what to do; for simulate()'s message.
   std::string failure_reason() const;
-
- protected:
-  // initialize() with the internal variables' values at t_l (EventDrivenInternal).
-  void start(const State& s, std::int64_t l, const std::array<double, kMaxInternal>& z);
-  const OdeLaw& law() const { return track_->law(); }
-  double h() const { return h_; }
+  // The internal variables it follows (with a bonding field's two): 0 for the particle alone,
+  // whose failure message then names u and v alone (simulate.hpp).
+  std::size_t internal_count() const { return internal_count_; }
 
  private:
   Model model_;
   double h_;
   EventDrivenParams params_;
   OdeSettings settings_;
+  std::size_t internal_count_;
   std::int64_t l0_ = 0, event_limit_ = 0;
   std::optional<ExactMarch<OdeLaw>> track_;
   EventSink sink_;
-};
-
-// event_driven with the model's internal variables (model.hpp): z integrated with the flight and
-// on the floor (ode_flight.hpp), sampled with u and v.
-class EventDrivenInternal : public EventDriven {
- public:
-  using StateType = StateWithInternal;
-  EventDrivenInternal(const Model& model, double h, const EventDrivenParams& params)
-      : EventDriven(model, h, params), initial_(with_internal(model, {}).z) {}
-
-  // The full initial state of a run from the particle's: z at the model's initial values.
-  StateWithInternal initial_state(const State& s) const { return {s, initial_}; }
-  void initialize(const StateWithInternal& s, std::int64_t l) { start(s, l, s.z); }
-  StepInfo do_step(StateWithInternal& s, std::int64_t l) {
-    State particle = s;
-    const StepInfo info = EventDriven::do_step(particle, l);
-    static_cast<State&>(s) = particle;
-    s.z = law().internal_at(static_cast<double>(l + 1) * h());
-    return info;
-  }
-
- private:
-  std::array<double, kMaxInternal> initial_;
 };
 
 }  // namespace impact

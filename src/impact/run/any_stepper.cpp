@@ -18,27 +18,34 @@ AnyStepper make_stepper(const Model& given, double h, const MethodParams& params
   // The law the method applies, read from the model once (capabilities.hpp) and given to the
   // time-steppers; exact and event_driven read Newton's law themselves, as their references do.
   const ContactLaw law = contact_law(model, params);
+  // The force kind, read once (force.hpp): the time-steppers' type for it.
+  const ForceKind kind = force_kind(model);
   return std::visit(
       [&](const auto& p) -> AnyStepper {
         using Params = std::decay_t<decltype(p)>;
         if constexpr (std::is_same_v<Params, DirectParams>) {
           if (p.free_flight == FreeFlightForm::paper) return DirectAsPrinted(model, law, h, p);
-          if (!model.internal.empty()) return DirectInternal(model, law, h, p);
-          switch (force_kind(model)) {
+          switch (kind) {
             case ForceKind::constant:
               return Direct(model, law, h, p);
             case ForceKind::harmonic:
               return DirectHarmonic(model, law, h, p);
-            case ForceKind::time_dependent:
+            case ForceKind::general:
               break;
           }
-          return DirectTimeDependent(model, law, h, p);
+          return DirectGeneral(model, law, h, p);
         }
         if constexpr (std::is_same_v<Params, FbNewtonParams>) return FbNewton(model, law, h, p);
         if constexpr (std::is_same_v<Params, MoreauJeanParams>) {
-          if (!model.internal.empty()) return MoreauJeanInternal(model, law, h, p);
-          if (constant_force(model)) return MoreauJean(model, law, h, p);
-          return MoreauJeanTimeDependent(model, law, h, p);
+          switch (kind) {
+            case ForceKind::constant:
+              return MoreauJean(model, law, h, p);
+            case ForceKind::harmonic:
+              return MoreauJeanHarmonic(model, law, h, p);
+            case ForceKind::general:
+              break;
+          }
+          return MoreauJeanGeneral(model, law, h, p);
         }
         if constexpr (std::is_same_v<Params, PenaltyParams>) return Penalty(model, law, h, p);
         if constexpr (std::is_same_v<Params, ExactParams>) {
@@ -46,7 +53,6 @@ AnyStepper make_stepper(const Model& given, double h, const MethodParams& params
           return ExactStepper(model, h, p);
         }
         if constexpr (std::is_same_v<Params, EventDrivenParams>) {
-          if (!model.internal.empty() || bonded(model)) return EventDrivenInternal(model, h, p);
           return EventDriven(model, h, p);
         }
         if constexpr (std::is_same_v<Params, DirectLocatedParams>)
@@ -59,8 +65,6 @@ AnyStepper make_stepper(const Scene& scene) {
   AnyStepper stepper = make_stepper(scene.model, scene.grid.h, scene.method);
   // A force expression need only be defined up to the scene's end: event_driven looks no further.
   if (auto* event_driven = std::get_if<EventDriven>(&stepper))
-    event_driven->set_end(scene.grid.end());
-  if (auto* event_driven = std::get_if<EventDrivenInternal>(&stepper))
     event_driven->set_end(scene.grid.end());
   return stepper;
 }

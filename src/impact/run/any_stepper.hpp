@@ -25,19 +25,15 @@
 
 namespace impact {
 
-// The methods that follow a model's internal variables (with_internal.hpp, event_driven.hpp):
-// their state is StateWithInternal.
-using DirectInternal = WithInternal<DirectTimeDependent>;
-using MoreauJeanInternal = WithInternal<MoreauJeanTimeDependent>;
-
-// One stepper type per method, and more for some: DirectHarmonic, DirectTimeDependent and
-// MoreauJeanTimeDependent are `direct` and `moreau_jean` with a time-dependent force,
-// DirectAsPrinted `direct` with (5-1) as printed (direct.hpp says why more than one type), and the
-// *Internal ones the methods with the model's internal variables.
-using AnyStepper =
-    std::variant<Direct, FbNewton, MoreauJean, Penalty, ExactStepper, EventDriven, DirectHarmonic,
-                 DirectTimeDependent, MoreauJeanTimeDependent, DirectAsPrinted, DirectLocated,
-                 DirectInternal, MoreauJeanInternal, EventDrivenInternal, ExactBonded>;
+// One stepper type per method, and per force kind for the time-steppers direct and moreau_jean
+// (ForceKind, force.hpp; direct.hpp says why types and not branches): Direct and MoreauJean for a
+// constant force, DirectHarmonic and MoreauJeanHarmonic for a harmonic one, DirectGeneral and
+// MoreauJeanGeneral (with_internal.hpp) for any other, with the internal variables if any;
+// DirectAsPrinted is `direct` with (5-1) as printed. A new force or law is a runtime value inside
+// a kind and never adds an alternative; only a new method does (ARCHITECTURE.md).
+using AnyStepper = std::variant<Direct, FbNewton, MoreauJean, Penalty, ExactStepper, EventDriven,
+                                DirectHarmonic, DirectGeneral, MoreauJeanHarmonic,
+                                MoreauJeanGeneral, DirectAsPrinted, DirectLocated, ExactBonded>;
 static_assert([]<class... S>(std::variant<S...>*) { return (Stepper<S> && ...); }(
                   static_cast<AnyStepper*>(nullptr)),
               "every method's stepper has the interface of stepper.hpp");

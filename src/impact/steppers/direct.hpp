@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <type_traits>
 
+#include "impact/forces/force.hpp"
 #include "impact/forces/free_flight.hpp"
 #include "impact/forces/scheme_flight.hpp"
 #include "impact/loop/repeats.hpp"
@@ -78,30 +79,23 @@ template <bool Outputs = true, class Real, class Mask, class Bits>
   direct_contact<Outputs>(s, since, gap_free, v_free, cor, has_cor, fixed_point, h, 2 / (h * h));
 }
 
-// What a stepper's body force needs: nothing (constant), the grid phasor (harmonic), or also an
-// expression's step integrals (time_dependent: any f(t), and a force of the state f(t, u, v),
-// whose f^l is taken at the step's start state, scheme_flight.hpp).
-enum class ForceKind { constant, harmonic, time_dependent };
-
-inline ForceKind force_kind(const Model& model) {
-  if (constant_force(model)) return ForceKind::constant;
-  return model.expression.empty() ? ForceKind::harmonic : ForceKind::time_dependent;
-}
-
-// The stepper: `Direct` for a constant force, `DirectHarmonic` and `DirectTimeDependent` for f(t),
-// whose step's discrete force is its mean f^l (scheme_flight.hpp): the free flight is
-// SchemeFlight's, the contact rule the same; `DirectAsPrinted` evaluates (5-1) as printed
-// (FreeFlightForm::paper) for any force. make_stepper picks the one the scene needs.
+// The stepper, one per force kind (ForceKind, force.hpp): `Direct` for a constant force,
+// `DirectHarmonic` for a harmonic one and BasicDirect<ForceKind::general> for any other f(t) (an
+// expression, of t or of the state, read at the step's start), whose step's discrete force is its
+// mean f^l (scheme_flight.hpp): the free flight is SchemeFlight's, the contact rule the same; the
+// general kind is stepped as DirectGeneral (with_internal.hpp), with the internal variables, if
+// any. `DirectAsPrinted` evaluates (5-1) as printed (FreeFlightForm::paper) for any force.
+// make_stepper picks the one the scene needs.
 //
-// Four types rather than one with branches, for the step loop of simulate.hpp, which keeps a local
-// stepper in registers (measured with 1e7 steps of h = 1e-6, free flight under gravity): a call in
-// the loop body, even on a branch never taken, made GCC keep the whole state on the stack (5.4
-// instead of 2.8 ns per step for a constant force, 8.4 instead of 5.2 for a harmonic one, whose
-// expression part is a call), and a branch to the printed form kept 2/h^2 from being taken out of
-// the loop (on an Intel Xeon family 6 model 167: 3.2 instead of 2.9 ns). And the steps since the
-// anchor are l + 1 - l_a from the loop's own l, not a counter carried in DirectLanes, which GCC's
-// SLP vectorizer packed with the gap into one vector register, chaining every step's free flight
-// to the next (6.5 instead of 2.8 ns).
+// Separate types rather than one with branches, for the step loop of simulate.hpp, which keeps a
+// local stepper in registers (measured with 1e7 steps of h = 1e-6, free flight under gravity): a
+// call in the loop body, even on a branch never taken, made GCC keep the whole state on the stack
+// (5.4 instead of 2.8 ns per step for a constant force, 8.4 instead of 5.2 for a harmonic one,
+// whose expression part is a call), and a branch to the printed form kept 2/h^2 from being taken
+// out of the loop (on an Intel Xeon family 6 model 167: 3.2 instead of 2.9 ns). And the steps since
+// the anchor are l + 1 - l_a from the loop's own l, not a counter carried in DirectLanes, which
+// GCC's SLP vectorizer packed with the gap into one vector register, chaining every step's free
+// flight to the next (6.5 instead of 2.8 ns).
 template <ForceKind Kind>
 class BasicDirect {
   static constexpr bool kTimeDependent = Kind != ForceKind::constant;
@@ -149,7 +143,7 @@ class BasicDirect {
 
   // The internal variables at t_l that the next step's force of the state reads (internal.hpp).
   void set_internal(const std::array<double, kMaxInternal>& z) const
-      requires(Kind == ForceKind::time_dependent) {
+      requires(Kind == ForceKind::general) {
     flight_.set_internal(z);
   }
 
@@ -161,7 +155,7 @@ class BasicDirect {
     const double since = static_cast<double>(l + 1 - anchor_l_);
     double gap_free, v_free;
     if constexpr (kTimeDependent) {
-      const State free = flight_.template step<Kind == ForceKind::time_dependent>(l);
+      const State free = flight_.template step<Kind == ForceKind::general>(l);
       gap_free = free.u;
       v_free = free.v;
     } else {
@@ -214,7 +208,6 @@ class BasicDirect {
 
 using Direct = BasicDirect<ForceKind::constant>;
 using DirectHarmonic = BasicDirect<ForceKind::harmonic>;
-using DirectTimeDependent = BasicDirect<ForceKind::time_dependent>;
 
 // (5-1) and (4-2) as printed, from the caller's state (free_flight.hpp), for any body force: with
 // N^l = 0 when u^{l+1} > phi, else u^{l+1} = phi and N^l = (2/h)((phi - u^l)/h - v^l) - f^l, f^l

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <type_traits>
 
+#include "impact/forces/force.hpp"
 #include "impact/forces/scheme_flight.hpp"
 #include "impact/loop/repeats.hpp"
 #include "impact/methods/capabilities.hpp"
@@ -57,12 +58,16 @@ template <class Real>
 // identity h sum N^l = v^n - v^0 - int_0^T f then holds to rounding as for a constant force, the
 // free-flight velocity is exact at the grid times, and with theta = 1/2 the position is its
 // trapezoidal rule, second order (Siconos's MoreauJeanOSI weights f(t_l), f(t_{l+1}) by theta
-// instead, which is second order too but keeps neither). `MoreauJean` is the constant force,
-// `MoreauJeanTimeDependent` f(t): two types, as for direct (direct.hpp says why). A force of the
+// instead, which is second order too but keeps neither). One type per force kind (ForceKind,
+// force.hpp), as for direct (direct.hpp says why): `MoreauJean` the constant force,
+// `MoreauJeanHarmonic` a harmonic one, BasicMoreauJean<ForceKind::general> any other, stepped as
+// MoreauJeanGeneral (with_internal.hpp) with the internal variables, if any. A force of the
 // state f(t, u, v) is taken at the step's start, h f^l = int_{t_l}^{t_{l+1}} f(t, u^l, v^l) dt
 // (scheme_flight.hpp): explicit in the state, so first order in h whatever theta.
-template <bool TimeDependent>
+template <ForceKind Kind>
 class BasicMoreauJean {
+  static constexpr bool kTimeDependent = Kind != ForceKind::constant;
+
  public:
   BasicMoreauJean(const Model& model, double h, const MoreauJeanParams& params)
       : BasicMoreauJean(model, contact_law(model, MethodParams(params)), h, params) {}
@@ -84,23 +89,24 @@ class BasicMoreauJean {
 
   [[gnu::always_inline]] void initialize(const State& s, std::int64_t l) {
     state_ = {s.u - phi_, s.v};
-    if constexpr (TimeDependent) force_.seek(l);
-    if constexpr (!TimeDependent) repeats_.reset();
+    if constexpr (kTimeDependent) force_.seek(l);
+    if constexpr (!kTimeDependent) repeats_.reset();
   }
 
   // Repeating steps (repeats.hpp), under a constant force: a step depends on the state it starts
   // from alone; contact steps are watched.
-  std::int64_t repeat_period() const requires(!TimeDependent) { return repeats_.period(); }
-  void skip_steps(std::int64_t n) requires(!TimeDependent) { repeats_.skip(n); }
+  std::int64_t repeat_period() const requires(!kTimeDependent) { return repeats_.period(); }
+  void skip_steps(std::int64_t n) requires(!kTimeDependent) { repeats_.skip(n); }
 
   // The internal variables at t_l that the next step's force of the state reads (internal.hpp).
-  void set_internal(const std::array<double, kMaxInternal>& z) const requires TimeDependent {
+  void set_internal(const std::array<double, kMaxInternal>& z) const
+      requires(Kind == ForceKind::general) {
     force_.set_internal(z);
   }
 
   [[gnu::always_inline]] StepInfo do_step(State& s, std::int64_t l) {
     StepInfo info;
-    if constexpr (TimeDependent) {
+    if constexpr (kTimeDependent) {
       const SchemeForce::Impulse impulse = force_.advance(l, state_);
       const double v_free = state_.v + h_ * f_ + (impulse.harmonic + impulse.expression);
       moreau_jean_update(state_.u, state_.v, info.contact_force, v_free, e_, theta_, h_);
@@ -124,11 +130,11 @@ class BasicMoreauJean {
   double theta_;
   double e_;
   State state_;  // (u - phi, v) at t_l
-  [[no_unique_address]] std::conditional_t<TimeDependent, NoRepeats, RepeatWatch> repeats_;
-  [[no_unique_address]] std::conditional_t<TimeDependent, SchemeForce, NoForce> force_;
+  [[no_unique_address]] std::conditional_t<kTimeDependent, NoRepeats, RepeatWatch> repeats_;
+  [[no_unique_address]] std::conditional_t<kTimeDependent, SchemeForce, NoForce> force_;
 };
 
-using MoreauJean = BasicMoreauJean<false>;
-using MoreauJeanTimeDependent = BasicMoreauJean<true>;
+using MoreauJean = BasicMoreauJean<ForceKind::constant>;
+using MoreauJeanHarmonic = BasicMoreauJean<ForceKind::harmonic>;
 
 }  // namespace impact

@@ -8,7 +8,10 @@
 // explicit Euler: a local error O(h^2), first order over a run, as the force of the state is; an
 // impact changes v alone, so z is continuous across it, and a rate read at a step's start does not
 // see a contact inside the step (an error O(h) there, again first order). The base method is one
-// whose force of the state is taken at the step's start (set_internal): direct and moreau_jean.
+// whose force of the state is taken at the step's start (set_internal): direct and moreau_jean,
+// whose general force kind (ForceKind, force.hpp) always steps this way: DirectGeneral and
+// MoreauJeanGeneral, with z zero-sized (m = 0, the rates' loop runs no time) where the model has
+// no internal variables, the bits of the particle the same as the base method's alone.
 #pragma once
 
 #include <array>
@@ -17,6 +20,8 @@
 #include "impact/forces/internal.hpp"
 #include "impact/methods/capabilities.hpp"
 #include "impact/model/model.hpp"
+#include "impact/steppers/direct.hpp"
+#include "impact/steppers/moreau_jean.hpp"
 
 namespace impact {
 
@@ -43,6 +48,10 @@ class WithInternal {
     base_.initialize(s, l);
   }
 
+  // m, the model's internal variables: 0 for a force of t or of (u, v) alone, whose failure
+  // message then names u and v alone (simulate.hpp).
+  std::size_t internal_count() const { return rates_.size(); }
+
   StepInfo do_step(StateWithInternal& s, std::int64_t l) {
     std::array<double, kMaxInternal> rate{};
     rates_.evaluate(static_cast<double>(l) * h_, s, rate);
@@ -60,5 +69,9 @@ class WithInternal {
   std::array<double, kMaxInternal> model_internal_;
   double h_;
 };
+
+// The general force kind of direct and moreau_jean (ForceKind, force.hpp).
+using DirectGeneral = WithInternal<BasicDirect<ForceKind::general>>;
+using MoreauJeanGeneral = WithInternal<BasicMoreauJean<ForceKind::general>>;
 
 }  // namespace impact
