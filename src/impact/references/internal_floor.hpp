@@ -9,22 +9,25 @@
 
 #include <array>
 #include <cstddef>
-#include <memory>
 #include <vector>
 
 #include "impact/forces/internal.hpp"
 #include "impact/model/model.hpp"
+#include "impact/references/rk8pd.hpp"
 
 namespace impact {
+
+// On the floor, z' = g(t, phi, 0, z).
+struct FloorRhs {
+  int operator()(double t, const double y[], double dydt[]) const;
+
+  InternalRates rates;
+  double phi;
+};
 
 class FloorInternal {
  public:
   FloorInternal(const Model& model, double rtol, double atol, double max_step);
-  FloorInternal(const FloorInternal& other);
-  FloorInternal& operator=(const FloorInternal& other);
-  FloorInternal(FloorInternal&&) noexcept;
-  FloorInternal& operator=(FloorInternal&&) noexcept;
-  ~FloorInternal();
 
   // On the floor from t with z.
   void start(double t, const std::array<double, kMaxInternal>& z);
@@ -41,13 +44,10 @@ class FloorInternal {
     double t;
     std::array<double, kMaxInternal> z;
   };
-  struct Gsl;
   void extend(double t) const;
 
-  Model model_;
-  InternalRates rates_;
-  double rtol_, atol_, max_step_;
-  std::unique_ptr<Gsl> gsl_;
+  OdeSystem<FloorRhs> system_;
+  double max_step_;
   double origin_ = 0;
   mutable std::vector<Node> nodes_;
 };

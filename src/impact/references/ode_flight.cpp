@@ -24,58 +24,34 @@ constexpr int kSamples = 9;  // force samples per ODE step, ends included (ode_f
 
 }  // namespace
 
-// The integrator and what its right-hand side reads; on the heap, since the system's params point
-// here.
-struct OdeLaw::Gsl : Rk8pd {
-  Gsl(const ForceFunction* f, const InternalRates* r, const std::optional<Bonding>& b, double floor,
-      const OdeSettings& s)
-      : Rk8pd(2 + (r ? r->size() : 0) + (b ? 2 : 0), s.atol, s.rtol, &Gsl::rhs, this),
-        force(f),
-        rates(r),
-        bonds(b),
-        bond_at(2 + (r ? r->size() : 0)),
-        phi(floor) {}
-  // y = (u - phi, v, z, ln(beta/beta0), D): y' = (v, f(t, u, v, z) - gamma beta^2 R(u - phi),
-  // g(t, u, v, z), -(gamma R^2 - eps_a)_+, 2 gamma beta^2 Phi (gamma R^2 - eps_a)_+) (bonding.hpp).
-  static int rhs(double t, const double y[], double dydt[], void* self) {
-    auto* g = static_cast<Gsl*>(self);
-    dydt[0] = y[1];
-    try {
-      const State s{g->phi + y[0], y[1]};
-      if (g->rates) {
-        g->force->set_internal(g->rates->evaluate(t, s, y + 2, dydt + 2));
-      }
-      dydt[1] = g->force->at(t, s);
-      if (g->bonds) {
-        const double beta = bond_fraction(*g->bonds, y[g->bond_at + kBondFraction]);
-        const double excess = damage_excess(*g->bonds, y[0]);
-        dydt[1] -= adhesive_pull(*g->bonds, beta, y[0]);
-        dydt[g->bond_at + kBondFraction] = -excess;
-        dydt[g->bond_at + kBondEnergy] = 2.0 * adhesive_energy(*g->bonds, beta, y[0]) * excess;
-      }
-    } catch (...) {
-      return g->failed();
-    }
-    return GSL_SUCCESS;
+int FlightRhs::operator()(double t, const double y[], double dydt[]) const {
+  dydt[0] = y[1];
+  const State s{phi + y[0], y[1]};
+  if (rates) force.set_internal(rates->evaluate(t, s, y + 2, dydt + 2));
+  dydt[1] = force.at(t, s);
+  if (bonds) {
+    const double beta = bond_fraction(*bonds, y[bond_at + kBondFraction]);
+    const double excess = damage_excess(*bonds, y[0]);
+    dydt[1] -= adhesive_pull(*bonds, beta, y[0]);
+    dydt[bond_at + kBondFraction] = -excess;
+    dydt[bond_at + kBondEnergy] = 2.0 * adhesive_energy(*bonds, beta, y[0]) * excess;
   }
-
-  const ForceFunction* force;
-  const InternalRates* rates;    // nullptr without internal variables
-  std::optional<Bonding> bonds;  // a copy: the law that owns this moves, the heap does not
-  std::size_t bond_at;           // where ln beta is in y
-  double phi;
-};
+  return GSL_SUCCESS;
+}
 
 OdeLaw::OdeLaw(const Model& model, const OdeSettings& settings)
-    : force_(std::make_unique<ForceFunction>(model)),
-      rates_(model.internal.empty() ? nullptr : std::make_unique<InternalRates>(model)),
-      phi_(model.phi),
+    : phi_(model.phi),
       rest_{model.phi, 0.0},
       settings_(settings),
+      flight_(2 + model.internal.size() + (bonded(model) ? 2 : 0), settings.atol, settings.rtol,
+              FlightRhs{ForceFunction(model),
+                        model.internal.empty() ? std::nullopt
+                                               : std::optional<InternalRates>(std::in_place, model),
+                        bonded(model) ? model.bonding : std::nullopt, 2 + model.internal.size(),
+                        model.phi}),
       internal_count_(model.internal.size() + (bonded(model) ? 2 : 0)),
-      rate_count_(model.internal.size()) {
-  if (bonded(model)) bonds_ = *model.bonding;
-  gsl_ = std::make_unique<Gsl>(force_.get(), rates_.get(), bonds_, phi_, settings);
+      rate_count_(model.internal.size()),
+      bonds_(flight_.rhs().bonds) {
   set_internal(with_internal(model, {}).z);
   if (rate_count_ > 0) floor_.emplace(model, settings.rtol, settings.atol, settings.max_step);
 }
@@ -95,48 +71,6 @@ void OdeLaw::keep_bonds_monotone(std::array<double, kMaxInternal>& z) const {
   spent = std::fmax(spent, z_a_[rate_count_ + kBondEnergy]);
 }
 
-OdeLaw::OdeLaw(const OdeLaw& other)
-    : force_(std::make_unique<ForceFunction>(*other.force_)),
-      rates_(other.rates_ ? std::make_unique<InternalRates>(*other.rates_) : nullptr),
-      phi_(other.phi_),
-      rest_(other.rest_),
-      settings_(other.settings_),
-      t_a_(other.t_a_),
-      t_b_(other.t_b_),
-      y_a_(other.y_a_),
-      y_b_(other.y_b_),
-      z_a_(other.z_a_),
-      z_b_(other.z_b_),
-      internal_count_(other.internal_count_),
-      rate_count_(other.rate_count_),
-      bonds_(other.bonds_),
-      floor_(other.floor_),
-      on_floor_(other.on_floor_),
-      floor_from_(other.floor_from_),
-      z_floor_(other.z_floor_),
-      bound_(other.bound_),
-      certified_(other.certified_),
-      checked_(other.checked_),
-      departing_(other.departing_),
-      at_crossing_(other.at_crossing_),
-      ode_steps_(other.ode_steps_),
-      ode_step_limit_(other.ode_step_limit_),
-      ode_ok_(other.ode_ok_),
-      out_of_steps_(other.out_of_steps_),
-      failed_status_(other.failed_status_) {
-  gsl_ = std::make_unique<Gsl>(force_.get(), rates_.get(), bonds_, phi_, settings_);
-  gsl_->h_next = other.gsl_->h_next;
-}
-
-OdeLaw& OdeLaw::operator=(const OdeLaw& other) {
-  if (this != &other) *this = OdeLaw(other);
-  return *this;
-}
-
-OdeLaw::OdeLaw(OdeLaw&&) noexcept = default;
-OdeLaw& OdeLaw::operator=(OdeLaw&&) noexcept = default;
-OdeLaw::~OdeLaw() = default;
-
 void OdeLaw::start(double t, double gap, double v, bool at_crossing) {
   if (internal_count_ > 0) {
     // Where the flight starts: on the floor, or inside the ODE step it left (an impact's launch);
@@ -145,8 +79,8 @@ void OdeLaw::start(double t, double gap, double v, bool at_crossing) {
     z_a_ = z_b_;
     on_floor_ = false;
   }
-  gsl_odeiv2_evolve_reset(gsl_->evolve);
-  gsl_->h_next = settings_.max_step / 4;
+  gsl_odeiv2_evolve_reset(flight_.rk().evolve);
+  flight_.rk().h_next = settings_.max_step / 4;
   t_a_ = t_b_ = certified_ = checked_ = t;
   y_a_ = y_b_ = {gap, v};
   departing_ = gap == 0.0 && v == 0.0;
@@ -173,15 +107,16 @@ void OdeLaw::dense(double t, State& state, std::array<double, kMaxInternal>& z) 
   std::copy(z_a_.begin(), z_a_.end(), y.begin() + 2);
   if (internal_count_ > 0) {
     // The rates at the step's start, as the rhs gives them.
-    gsl_->sys.function(t_a_, y.data(), rate_in.data(), gsl_.get());
-    gsl_->rethrow();
+    flight_.evaluate(t_a_, y.data(), rate_in.data());
+    flight_.rk().rethrow();
   } else {
     rate_in = {y_a_.v, force_on(t_a_, y_a_, z_a_)};
   }
-  gsl_odeiv2_step_reset(gsl_->dense);
-  const int status = gsl_odeiv2_step_apply(gsl_->dense, t_a_, t - t_a_, y.data(), error.data(),
-                                           rate_in.data(), nullptr, &gsl_->sys);
-  gsl_->rethrow();
+  gsl_odeiv2_step_reset(flight_.rk().dense);
+  const int status =
+      gsl_odeiv2_step_apply(flight_.rk().dense, t_a_, t - t_a_, y.data(), error.data(),
+                            rate_in.data(), nullptr, &flight_.rk().sys);
+  flight_.rk().rethrow();
   if (status != GSL_SUCCESS) return;
   state = {y[0], y[1]};
   std::copy(y.begin() + 2, y.begin() + 2 + static_cast<std::ptrdiff_t>(n - 2), z.begin());
@@ -224,9 +159,10 @@ void OdeLaw::take_step() {
   std::array<double, 2 + kMaxInternal> y{y_a_.u, y_a_.v};
   std::copy(z_a_.begin(), z_a_.end(), y.begin() + 2);
   const double stop = std::fmin(t_a_ + settings_.max_step, settings_.end);
-  const int status = gsl_odeiv2_evolve_apply(gsl_->evolve, gsl_->control, gsl_->step, &gsl_->sys,
-                                             &t, stop, &gsl_->h_next, y.data());
-  gsl_->rethrow();
+  const int status =
+      gsl_odeiv2_evolve_apply(flight_.rk().evolve, flight_.rk().control, flight_.rk().step,
+                              &flight_.rk().sys, &t, stop, &flight_.rk().h_next, y.data());
+  flight_.rk().rethrow();
   const bool finite =
       std::all_of(y.begin(), y.begin() + 2 + static_cast<std::ptrdiff_t>(internal_count_),
                   [](double x) { return std::isfinite(x); });
@@ -243,7 +179,7 @@ void OdeLaw::take_step() {
   // The step's force bound (ode_flight.hpp).
   std::array<double, kSamples> f{};
   double largest = 0, change = 0;
-  const bool state = force_->state_dependent() || bonds_;
+  const bool state = flight_.rhs().force.state_dependent() || bonds_;
   for (int i = 0; i < kSamples; ++i) {
     const double t_i = t_a_ + (t_b_ - t_a_) * i / (kSamples - 1);
     if (!state) {

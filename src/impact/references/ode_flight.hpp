@@ -75,6 +75,7 @@
 #include "impact/model/model.hpp"
 #include "impact/references/flight_search.hpp"
 #include "impact/references/internal_floor.hpp"
+#include "impact/references/rk8pd.hpp"
 
 namespace impact {
 
@@ -85,15 +86,23 @@ struct OdeSettings {
   double end = std::numeric_limits<double>::infinity();  // the last time f is evaluated at
 };
 
+// The flight's right-hand side (ode_flight.cpp), y = (u - phi, v, z, ln(beta/beta0), D):
+// y' = (v, f(t, u, v, z) - gamma beta^2 R(u - phi), g(t, u, v, z), -(gamma R^2 - eps_a)_+,
+// 2 gamma beta^2 Phi (gamma R^2 - eps_a)_+) (bonding.hpp).
+struct FlightRhs {
+  int operator()(double t, const double y[], double dydt[]) const;
+
+  ForceFunction force;
+  std::optional<InternalRates> rates;  // the internal variables' rates, if any
+  std::optional<Bonding> bonds;        // a bonding field that acts
+  std::size_t bond_at;                 // where ln beta is in y
+  double phi;
+};
+
 class OdeLaw {
  public:
   // Throws std::invalid_argument for an expression ForceFunction refuses.
   OdeLaw(const Model& model, const OdeSettings& settings);
-  OdeLaw(const OdeLaw& other);
-  OdeLaw& operator=(const OdeLaw& other);
-  OdeLaw(OdeLaw&&) noexcept;
-  OdeLaw& operator=(OdeLaw&&) noexcept;
-  ~OdeLaw();
 
   void start(double t, double gap, double v, bool at_crossing);
   std::optional<Contact> search(double horizon, long& budget);
@@ -110,14 +119,14 @@ class OdeLaw {
 
   // f on the floor at rest, f(t, phi, 0) (and z on the floor): f(t) for a force of t alone.
   double force(double t) const {
-    if (rate_count_ > 0) force_->set_internal(floor_internal(t));
-    return force_->at(t, rest_);
+    if (rate_count_ > 0) flight_.rhs().force.set_internal(floor_internal(t));
+    return flight_.rhs().force.at(t, rest_);
   }
   // f at the gap and velocity y = (u - phi, v) and the internal variables z (ln beta for the
   // bonds, ln(beta/beta0)), the bonds' pull included: the particle's acceleration in flight.
   double force_on(double t, const State& y, const std::array<double, kMaxInternal>& z) const {
-    if (rate_count_ > 0) force_->set_internal(z);
-    const double f = force_->at(t, {phi_ + y.u, y.v});
+    if (rate_count_ > 0) flight_.rhs().force.set_internal(z);
+    const double f = flight_.rhs().force.at(t, {phi_ + y.u, y.v});
     if (!bonds_) return f;
     return f - adhesive_pull(*bonds_, bond_fraction(*bonds_, z[rate_count_ + kBondFraction]), y.u);
   }
@@ -132,7 +141,6 @@ class OdeLaw {
   std::optional<double> chatter_window(double t, double V, double e) const;
 
  private:
-  struct Gsl;
   void take_step();
   // The state and internal variables at t in the current ODE step.
   void dense(double t, State& y, std::array<double, kMaxInternal>& z) const;
@@ -147,12 +155,10 @@ class OdeLaw {
                                              int depth) const;
   double first_upward(double a, double fa, double b, int depth) const;
 
-  std::unique_ptr<ForceFunction> force_;  // on the heap: the GSL system points to it
-  std::unique_ptr<InternalRates> rates_;  // the internal variables' rates, if any; likewise
   double phi_;
   State rest_;  // (phi, 0): the state of a particle at rest on the floor
   OdeSettings settings_;
-  std::unique_ptr<Gsl> gsl_;
+  OdeSystem<FlightRhs> flight_;  // the integrator with the force and the rates it reads
   double t_a_ = 0, t_b_ = 0;
   State y_a_, y_b_;
   std::array<double, kMaxInternal> z_a_{}, z_b_{};  // the internal variables at t_a_ and t_b_

@@ -96,7 +96,8 @@ double OdeLaw::rest_impulse(double a, double b) const {
   if (floor_ && on_floor_) floor_->forget_before(a);
   for (double x = a; x < b; x += settings_.max_step) {
     const double y = std::fmin(b, x + settings_.max_step);
-    value -= rate_count_ > 0 ? controlled_integral(on_floor, x, y) : force_->integral(x, y, rest_);
+    value -= rate_count_ > 0 ? controlled_integral(on_floor, x, y)
+                             : flight_.rhs().force.integral(x, y, rest_);
   }
   return value;
 }
@@ -117,7 +118,7 @@ std::optional<double> OdeLaw::chatter_window(double t, double V, double e) const
     previous = gi;
   }
   // A force of the state: the corners of the bounces' box at each time (ode_flight.hpp).
-  if (force_->state_dependent() || bonds_) {
+  if (flight_.rhs().force.state_dependent() || bonds_) {
     const double height = V * V / g;
     for (int i = 0; i < kChatterSamples; ++i) {
       const double ti = t + W0 * i / (kChatterSamples - 1);
