@@ -154,7 +154,8 @@ std::vector<std::string> sweep_keys() {
 SweepAxis::SweepAxis(std::string key, std::vector<double> values)
     : key_(std::move(key)),
       size_(static_cast<std::int64_t>(values.size())),
-      list_(std::move(values)) {
+      list_(std::move(values)),
+      given_(true) {
   if (list_.empty()) throw SceneError("axis " + key_ + ": no values");
   for (double& x : list_) {
     if (!std::isfinite(x))
@@ -185,15 +186,14 @@ SweepGrid::SweepGrid(std::vector<SweepAxis> axes, std::string source,
         !internal_number(axis.key())) {
       const std::vector<std::string> keys = sweep_keys();
       std::vector<std::string_view> allowed(keys.begin(), keys.end());
-      throw SceneError("--vary " + axis.key() +
-                       ": not a key a sweep can vary (allowed: " + join(allowed) +
+      throw SceneError(axis.named() + ": not a key a sweep can vary (allowed: " + join(allowed) +
                        "; method.name and force.expression are not numbers, nor is "
                        "internal.NAME.rate: one sweep per value; the [output] keys do not change "
                        "a summary)");
     }
     for (const SweepAxis& other : axes_)
       if (&other != &axis && other.key() == axis.key())
-        throw SceneError("--vary " + axis.key() + ": the key is varied twice");
+        throw SceneError(axis.named() + ": the key is varied twice");
     grid_varies_ = grid_varies_ || axis.key() == "time.T" || axis.key() == "time.h";
   }
   // Strides for "the last axis varies fastest"; at most 2^53 points, so that a point's index and
@@ -257,7 +257,7 @@ void SweepGrid::check_points() {
       spec = numeric_spec(axis.key(), method_name(base_.method));
     }
     if (!spec || (spec->set_variable && variable < 0))
-      throw std::logic_error("--vary " + axis.key() + ": the reader took a key it has not");
+      throw std::logic_error(axis.named() + ": the reader took a key it has not");
     keys_.push_back(spec);
     variables_.push_back(variable);
   }
@@ -295,7 +295,7 @@ void SweepGrid::fail(std::int64_t i, std::string_view table, std::string_view ke
   for (std::size_t k = 0; k < axes_.size(); ++k)
     if (axes_[k].key() == name) {
       value = axes_[k].text(index(i, k));
-      origin = "--set " + name + "=" + value;
+      origin = axes_[k].origin(index(i, k));
     }
   if (value.empty() && with_value) {
     Scene scene = base_;

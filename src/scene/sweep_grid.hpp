@@ -31,6 +31,12 @@ class SweepAxis {
   SweepAxis(std::string key, std::vector<double> values);
 
   const std::string& key() const { return key_; }
+  // How a message names the axis: "--vary KEY" for a --vary, "axis KEY" for a program's values.
+  std::string named() const { return (given_ ? "axis " : "--vary ") + key_; }
+  // Where value j came from, in a point's message: the --set it stands for, or the axis.
+  std::string origin(std::int64_t j) const {
+    return given_ ? named() : "--set " + key_ + "=" + text(j);
+  }
   std::int64_t size() const { return size_; }
   // Value j, as the scene reader reads its text() (a -0 is read as 0, so it is 0 here).
   double value(std::int64_t j) const;
@@ -46,6 +52,7 @@ class SweepAxis {
   double a_ = 0, b_ = 0;
   bool log_ = false;
   std::vector<double> list_;  // the values of `v1,v2,...`; empty for a range
+  bool given_ = false;        // a program's list of values, not a --vary
 };
 
 // The keys --vary accepts: every number a scene reads (method keys only for their method), and
