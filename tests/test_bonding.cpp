@@ -9,12 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "bonding_support.hpp"
 #include "cli_support.hpp"
-#include "impact/loop/simulate.hpp"
-#include "impact/run/any_stepper.hpp"
-#include "impact/run/scene.hpp"
-#include "impact/run/step_events.hpp"
-#include "scene/read_scene.hpp"
 
 using Catch::Contains;
 using namespace impact;
@@ -34,34 +30,6 @@ const std::string kWell = "gamma = 100.0\nL = 1e6\neps_a = 1e6\nbeta0 = 1.0\n";
 // Bonds that break above the gap sqrt(eps_a/gamma) = 0.0224 and saturate at L = 0.03.
 const std::string kBreaking = "gamma = 100.0\nL = 0.03\neps_a = 0.05\nbeta0 = 1.0\n";
 
-struct Sampled {
-  std::vector<StateWithInternal> states;
-  std::vector<Event> events;
-  Scene scene;
-};
-
-Sampled run(const std::string& text, const std::vector<std::string>& set = {}) {
-  Sampled out;
-  out.scene = parse_scene(text, "bonding.toml", set);
-  AnyStepper stepper = make_stepper(out.scene);
-  REQUIRE(attach_event_sink(stepper, [&](const Event& e) { out.events.push_back(e); }));
-  simulate(stepper, out.scene.initial, out.scene.grid,
-           [&](std::int64_t, const auto& s, const StepInfo&) {
-             if constexpr (std::is_same_v<std::decay_t<decltype(s)>, StateWithInternal>)
-               out.states.push_back(s);
-             else
-               FAIL("a bonded run steps the state with beta and D");
-           });
-  return out;
-}
-
-std::vector<Event> impacts(const std::vector<Event>& events) {
-  std::vector<Event> out;
-  for (const Event& e : events)
-    if (e.kind == EventKind::impact) out.push_back(e);
-  return out;
-}
-
 // max over the samples of |E + D + (the impacts' losses so far) - E(0)|, E with the bonds'
 // energy gamma beta^2 Phi(g) (model.hpp).
 double energy_balance_error(const Sampled& run) {
@@ -80,26 +48,13 @@ double energy_balance_error(const Sampled& run) {
   return worst;
 }
 
-// beta in [0, beta0] and never rising, D >= 0 and never falling, at every sample.
-void check_bonds_monotone(const Sampled& run) {
-  const double beta0 = run.scene.model.bonding->beta0;
-  double beta = beta0, spent = 0;
-  for (const StateWithInternal& s : run.states) {
-    REQUIRE(s.z[kBondFraction] >= 0.0);
-    REQUIRE(s.z[kBondFraction] <= beta);
-    REQUIRE(s.z[kBondEnergy] >= spent);
-    beta = s.z[kBondFraction];
-    spent = s.z[kBondEnergy];
-  }
-}
-
 }  // namespace
 
 TEST_CASE("bonding: exact's impacts in the well with no damage come every 2 atan(10/9.81)/10",
           "[bonding][exact]") {
   const double period = 2 * std::atan(10 / 9.81) / 10;  // well_return_time(100, 9.81, 1)
   CHECK(well_return_time(100.0, 9.81, 1.0) == Approx(period).epsilon(1e-15));
-  const Sampled exact = run(bonded_scene("exact", kWell));
+  const Sampled exact = run_bonded(bonded_scene("exact", kWell));
   const std::vector<Event> hits = impacts(exact.events);
   REQUIRE(hits.size() == 10);
   for (std::size_t k = 0; k < hits.size(); ++k) {
@@ -110,7 +65,7 @@ TEST_CASE("bonding: exact's impacts in the well with no damage come every 2 atan
   }
   // event_driven, a generic ODE with the pull in it, agrees: rk8pd at rtol 1e-12 (its default)
   // locates each impact to about 1e-15 and drifts by no more than that per flight.
-  const Sampled ode = run(bonded_scene("event_driven", kWell));
+  const Sampled ode = run_bonded(bonded_scene("event_driven", kWell));
   const std::vector<Event> ode_hits = impacts(ode.events);
   REQUIRE(ode_hits.size() == hits.size());
   for (std::size_t k = 0; k < hits.size(); ++k)
@@ -126,7 +81,7 @@ TEST_CASE("bonding: exact's impacts in the well with no damage come every 2 atan
 
 TEST_CASE("bonding: E + D + the impacts' losses stay E(0), to round-off in exact's closed form",
           "[bonding][energy]") {
-  const Sampled exact = run(bonded_scene("exact", kWell), {"floor.cor=0.8"});
+  const Sampled exact = run_bonded(bonded_scene("exact", kWell), {"floor.cor=0.8"});
   CHECK(energy_balance_error(exact) <= 1e-14);
   for (const StateWithInternal& s : exact.states) {
     CHECK(s.z[kBondFraction] == 1.0);
@@ -138,8 +93,8 @@ TEST_CASE("bonding: event_driven keeps E + D + the impacts' losses at E(0) while
           "[bonding][energy]") {
   for (const char* cor : {"1.0", "0.9"}) {
     INFO("COR " << cor);
-    const Sampled ode =
-        run(bonded_scene("event_driven", kBreaking), {"time.T=3", std::string("floor.cor=") + cor});
+    const Sampled ode = run_bonded(bonded_scene("event_driven", kBreaking),
+                                   {"time.T=3", std::string("floor.cor=") + cor});
     // Bonds broke (D > 0), and the balance holds to rk8pd's tolerance (rtol 1e-12) over the
     // flights: D is carried as a state, so the identity is measured, not assumed.
     CHECK(ode.states.back().z[kBondEnergy] > 1e-4);
@@ -155,7 +110,7 @@ TEST_CASE("bonding: beta stays in [0, beta0] and never rises, D never falls, whe
   const std::string scene =
       "[initial]\nu0 = 0.0\nv0 = 30.0\n[time]\nT = 2.0\nh = 0.01\n[method]\nname = "
       "\"event_driven\"\n[bonding]\ngamma = 100.0\nL = 1.0\neps_a = 1.0\nbeta0 = 1.0\n";
-  const Sampled ode = run(scene);
+  const Sampled ode = run_bonded(scene);
   check_bonds_monotone(ode);
   CHECK(ode.states.back().z[kBondFraction] < 1e-6);
   CHECK(ode.states.back().u > 10.0);  // it escaped
@@ -167,11 +122,12 @@ TEST_CASE("bonding: no bond breaks below v0^2 = beta0^2 eps_a + 2 G sqrt(eps_a /
   // v0 = 1.2776319911 (paper_notes/bonding_field.md); below it beta stays beta0 exactly.
   const double boundary = std::sqrt(0.49 * 0.5 + 2 * 9.81 * std::sqrt(0.5 / 100));
   const std::string bonds = "gamma = 100.0\nL = 1e6\neps_a = 0.5\nbeta0 = 0.7\n";
-  const Sampled below = run(bonded_scene("event_driven", bonds),
-                            {"initial.v0=" + std::to_string(0.999 * boundary), "time.T=0.5"});
+  const Sampled below =
+      run_bonded(bonded_scene("event_driven", bonds),
+                 {"initial.v0=" + std::to_string(0.999 * boundary), "time.T=0.5"});
   for (const StateWithInternal& s : below.states) REQUIRE(s.z[kBondFraction] == 0.7);
-  const Sampled above = run(bonded_scene("event_driven", bonds),
-                            {"initial.v0=" + std::to_string(1.01 * boundary), "time.T=0.5"});
+  const Sampled above = run_bonded(bonded_scene("event_driven", bonds),
+                                   {"initial.v0=" + std::to_string(1.01 * boundary), "time.T=0.5"});
   CHECK(above.states.back().z[kBondFraction] < 0.7);
 }
 
@@ -192,11 +148,11 @@ TEST_CASE("bonding: [bonding] and the same model written as data agree under eve
     const std::string common = "[initial]\nu0 = 0.0\nv0 = " + c.v0 + "\n[floor]\ncor = " + c.cor +
                                "\n[time]\nT = " + c.T +
                                "\nh = 0.001\n[method]\nname = \"event_driven\"\n" + tolerances;
-    const Sampled bonded = run(common + "[force]\nf = " + c.f + "\n[bonding]\n" + kBreaking);
-    const Sampled data =
-        run(common + "[force]\nexpression = \"" + c.f + " - 100 * beta^2 * min(u, 0.03)\"\n" +
-            "[[internal]]\nname = \"beta\"\ninitial = 1.0\n" +
-            "rate = \"-max(beta * (100 * min(u, 0.03)^2 - 0.05), 0)\"\n");
+    const Sampled bonded = run_bonded(common + "[force]\nf = " + c.f + "\n[bonding]\n" + kBreaking);
+    const Sampled data = run_bonded(common + "[force]\nexpression = \"" + c.f +
+                                    " - 100 * beta^2 * min(u, 0.03)\"\n" +
+                                    "[[internal]]\nname = \"beta\"\ninitial = 1.0\n" +
+                                    "rate = \"-max(beta * (100 * min(u, 0.03)^2 - 0.05), 0)\"\n");
     REQUIRE(bonded.states.size() == data.states.size());
     CHECK(bonded.states.back().z[kBondFraction] < 0.999);  // bonds broke
     double worst = 0;
@@ -276,10 +232,19 @@ TEST_CASE("bonding: a bad [bonding] value exits 2 naming the key, its value and 
   CHECK_THAT(r.err, Contains("s.toml") && Contains("bonding.beta0"));
   // A method without the bonding capability (capabilities.hpp) refuses it, naming those that take
   // it.
-  dir.write("s.toml", bonded_scene("moreau_jean", kWell));
-  r = dir.run("run s.toml -o -");
+  for (const char* refusing : {"fb_newton", "penalty", "direct_located"}) {
+    dir.write("s.toml", bonded_scene(refusing, kWell));
+    r = dir.run("run s.toml -o -");
+    INFO(refusing << ": " << r.err);
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err,
+               Contains("method.name") && Contains("use direct, moreau_jean, exact, event_driven"));
+  }
+  // direct's (5-1) as printed steps (u, v) alone: it refuses the bonds, naming the key.
+  dir.write("s.toml", bonded_scene("direct", kWell));
+  r = dir.run("run s.toml -o - --set method.free_flight=paper");
   CHECK(r.code == 2);
-  CHECK_THAT(r.err, Contains("method.name") && Contains("exact, event_driven"));
+  CHECK_THAT(r.err, Contains("method.free_flight") && Contains("bonding field"));
   // exact refuses a run whose flights leave the well with no damage, and says why.
   dir.write("s.toml", bonded_scene("exact", kBreaking));
   r = dir.run("run s.toml -o -");

@@ -138,7 +138,7 @@ TEST_CASE("capabilities: the table", "[capabilities]") {
   // (a bonding field), Iterations channel, reFerence, energy Bound, exact eVents. A harmonic force
   // has no column: every method takes it (kFeatures checks each).
   const std::vector<std::pair<std::string, std::string>> rows = {
-      {"direct", "RESLZ---B-"},         {"fb_newton", "RE----I-B-"}, {"moreau_jean", "RESLZ-----"},
+      {"direct", "RESLZA--B-"},         {"fb_newton", "RE----I-B-"}, {"moreau_jean", "RESLZA----"},
       {"penalty", "-E----I---"},        {"exact", "R--L-A-FBV"},     {"event_driven", "RESLZA-F-V"},
       {"direct_located", "RE--------"},
   };

@@ -118,13 +118,13 @@ TEST_CASE("sweep failures: a point its method refuses is bad input, named before
   TempDir dir;
   dir.write("s.toml",
             "[initial]\nu0 = 0.05\nv0 = -1.0\n[force]\nf = -9.80665\n[time]\nT = 0.2\nh = 1e-3\n"
-            "[method]\nname = \"moreau_jean\"\n[bonding]\nbeta0 = 1.0\n");
-  // Point 1 has no bonding field (gamma = 0), point 2 one that moreau_jean refuses: it used to be
+            "[method]\nname = \"fb_newton\"\n[bonding]\nbeta0 = 1.0\n");
+  // Point 1 has no bonding field (gamma = 0), point 2 one that fb_newton refuses: it used to be
   // a failed row (exit 1) after point 1 had run; the refusal is the reader's, with its key.
   CHECK_FAILS_CLEANLY(dir, "sweep s.toml --vary bonding.gamma=0,100 -o sweep.csv", 2,
                       Contains("point 2 of 2 (bonding.gamma=100)") &&
-                          Contains("'moreau_jean' takes no bonding field") &&
-                          Contains("use exact, event_driven"));
+                          Contains("'fb_newton' takes no bonding field") &&
+                          Contains("use direct, moreau_jean, exact, event_driven"));
   // A step (5-1) cannot take, at the one point that has it: time.h, named with its value.
   dir.write("direct.toml",
             "[initial]\nu0 = 0.05\nv0 = -1.0\n[force]\nf = -9.80665\n[time]\nT = 1e-150\n"

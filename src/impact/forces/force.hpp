@@ -99,13 +99,14 @@ bool state_force(const Model& model);
 
 // The force-kind policy: what a time-stepper's body force needs, read once from the model by
 // make_stepper (any_stepper.cpp). constant: nothing; harmonic: the grid phasor; general: any
-// expression (of t or of the state, a linear force written as one) and/or internal variables,
-// stepped always with StateWithInternal (with_internal.hpp; z zero-sized without [[internal]]).
+// expression (of t or of the state, a linear force written as one), internal variables and/or a
+// bonding field that acts (its pull a force of the state, beta and D in z), stepped always with
+// StateWithInternal (with_internal.hpp; z zero-sized without [[internal]] or bonds).
 // A new force or law is a runtime value inside one of these kinds, never a new stepper type.
 enum class ForceKind { constant, harmonic, general };
 
 inline ForceKind force_kind(const Model& model) {
-  if (!model.internal.empty() || !model.expression.empty() || model.linear)
+  if (!model.internal.empty() || !model.expression.empty() || model.linear || bonded(model))
     return ForceKind::general;
   return model.harmonic ? ForceKind::harmonic : ForceKind::constant;
 }

@@ -23,6 +23,7 @@ double GridPhasor::angle(int k, int d) const {
 
 SchemeForce::SchemeForce(const Model& model, double h)
     : phi_(model.phi), h_(h), has_phasor_(model.harmonic.has_value()) {
+  if (bonded(model)) bonds_ = model.bonding;
   if (has_phasor_) {
     const Harmonic& w = *model.harmonic;
     phasor_ = GridPhasor(w, h);
@@ -60,7 +61,8 @@ SchemeFlight::SchemeFlight(const Model& model, double h) : f_(model.f), h_(h), f
     const double trapezoid = h / 2 / std::tan(model.harmonic->omega * h / 2);
     k_trapezoid_ = force_.amplitude_over_omega() * trapezoid;
   }
-  stepped_part_ = !model.expression.empty() || (model.harmonic && !closed_form_ && !force_.slow());
+  stepped_part_ = !model.expression.empty() || bonded(model) ||
+                  (model.harmonic && !closed_form_ && !force_.slow());
 }
 
 }  // namespace impact

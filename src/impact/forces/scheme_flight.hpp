@@ -26,6 +26,14 @@
 // by explicit Euler: a local error O(h^2) in v, first order over a run, as the schemes are across
 // impacts; and the impulse identity (4-9) holds with int f replaced by h sum f^l.
 //
+// A bonding field's pull -gamma beta^2 R(g) (bonding.hpp) is a force of the state too, and is taken
+// the same way: its impulse over step l is -h gamma (beta^l)^2 R(g^l), beta^l the bonds' fraction
+// at the step's start (set_internal, z[kBondFraction]) and g^l the gap there. Explicit, as every
+// force of the state in these steppers, so that a step stays a closed form with no solve: the
+// particle's step then costs what it costs without bonds, and beta is updated after it by the
+// closed form of bond_step (bonding.hpp) at the gap the step gave. First order, as the schemes
+// are across impacts; an implicit pull would need g^{l+1} inside the impulse, a solve per step.
+//
 // A slow force, w h < kSlowPhase (harmonic_series.hpp): the same sums in terms of x = w s,
 //   v^m = ... + a s (cos theta_a C1(x) + sin theta_a S1(x)),
 //   u^m = ... + a s^2 (cos theta_a S2(x) + sin theta_a C2(x))
@@ -39,6 +47,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 
 #include "impact/forces/force.hpp"
 #include "impact/forces/free_flight.hpp"
@@ -133,7 +142,7 @@ class SchemeForce {
   // Inlined even on a step loop's exception path (heap_value.hpp).
   [[gnu::always_inline]] ~SchemeForce() {}
 
-  bool constant() const { return !has_phasor_ && !expression_; }
+  bool constant() const { return !has_phasor_ && !expression_ && !bonds_; }
   // I^l, the integral of f(t) - f over [t_l, t_{l+1}], as its harmonic and expression parts; the
   // phasor is moved to t_{l+1} (from wherever it was: a call for another l than the last + 1
   // seeks first).
@@ -158,8 +167,11 @@ class SchemeForce {
       impulse.harmonic = slow_ ? slow_impulse_ * (s0 * cos_half_ + c0 * sin_half_)
                                : amplitude_over_omega_ * (c0 - phasor_.cos());
     }
-    if constexpr (Expression)
+    if constexpr (Expression) {
       if (expression_) impulse.expression = expression_integral(*expression_, l, h_, phi_, at);
+      // The bonds' pull at the step's start, with the state's part of the force (file comment).
+      if (bonds_) impulse.expression -= h_ * adhesive_pull(*bonds_, bond_fraction_, at.u);
+    }
     return impulse;
   }
   // The phasor at t_l.
@@ -170,6 +182,7 @@ class SchemeForce {
   // The internal variables a force of the state reads from the next advance() on (force.hpp).
   void set_internal(const std::array<double, kMaxInternal>& z) const {
     if (expression_) expression_->set_internal(z);
+    bond_fraction_ = z[kBondFraction];
   }
   // The harmonic part: whether there is one, whether it is slow (harmonic_series.hpp), a / w and
   // the phasor at the current time.
@@ -190,6 +203,9 @@ class SchemeForce {
   double slow_impulse_ = 0, cos_half_ = 1, sin_half_ = 0;
   // The expression part alone (f = 0, no harmonic), on the heap: its parser binds t by address.
   HeapValue<ForceFunction> expression_;
+  // A bonding field that acts (bonded(), model.hpp), and beta at the step's start (set_internal).
+  std::optional<Bonding> bonds_;
+  mutable double bond_fraction_ = 0;
 };
 
 // The largest w h for which the harmonic flight is summed in closed form (c above keeps all but a

@@ -21,6 +21,7 @@ const MethodInfo kMethods[] = {
              .state_force = true,
              .linear_force = true,
              .internal_variables = true,
+             .bonding = true,
              .scheme_force_channel = true,
              .energy_bound = true}},
     {.name = "fb_newton",
@@ -38,7 +39,8 @@ const MethodInfo kMethods[] = {
              .time_expression = true,
              .state_force = true,
              .linear_force = true,
-             .internal_variables = true}},
+             .internal_variables = true,
+             .bonding = true}},
     // Compliance has no impact law to apply a COR to: it refuses one rather than run elastic.
     {.name = "penalty",
      .summary = "normal compliance N = c_N max(phi - u, 0), GSL odeiv2",
@@ -243,20 +245,26 @@ const Feature kFeatures[] = {
      [](const Asked&) -> std::string_view {
        return "2/h^2 of (5-1) is not representable for this time.h";
      }},
-    // (5-1) as printed steps (u, v) alone; the closed form follows internal variables.
+    // (5-1) as printed steps (u, v) alone; the closed form follows internal variables and bonds.
     {nullptr,
      [](const Asked& a) {
        const auto* direct = std::get_if<DirectParams>(&a.params);
-       return direct && direct->free_flight == FreeFlightForm::paper && !a.model.internal.empty();
+       return direct && direct->free_flight == FreeFlightForm::paper &&
+              (!a.model.internal.empty() || bonded(a.model));
      },
      "method", "free_flight",
      [](const Asked& a) {
-       return "method " + quoted(a) +
-              " with free_flight = \"paper\" does not follow internal variables: [[internal]] is "
-              "given (the closed form does)";
+       return "method " + quoted(a) + " with free_flight = \"paper\" does not follow " +
+              (a.model.internal.empty()
+                   ? std::string("a bonding field: [bonding] gives gamma beta0^2 != 0")
+                   : std::string("internal variables: [[internal]] is given")) +
+              " (the closed form does)";
      },
-     [](const Asked&) -> std::string_view {
-       return "with free_flight = \"paper\" it does not follow internal variables ([[internal]])";
+     [](const Asked& a) -> std::string_view {
+       return a.model.internal.empty()
+                  ? "with free_flight = \"paper\" it does not follow a bonding field ([bonding])"
+                  : "with free_flight = \"paper\" it does not follow internal variables "
+                    "([[internal]])";
      }},
 };
 

@@ -70,6 +70,24 @@ inline double damage_excess(const Bonding& b, double gap) {
   return std::max(b.gamma * r * r - b.eps_a, 0.0);
 }
 
+// One step of the bonds in a time-stepper (WithInternal, with_internal.hpp), from (beta_n, D_n)
+// to (beta_{n+1}, D_{n+1}) once the particle's step has given the gap g_{n+1} at its end:
+//   beta_{n+1} = beta_n / (1 + h (gamma R(g_{n+1})^2 - eps_a)_+),
+// implicit Euler's closed form of beta' = -beta (gamma R^2 - eps_a)_+. The rate is read at the
+// step's end, g_{n+1}, because implicit Euler takes it there, and because it is known without an
+// iteration: the particle's step used beta_n alone (the pull is explicit). The divisor is >= 1,
+// so beta_{n+1} is in [0, beta_n] for any h, also in rounding (a quotient by x >= 1 rounds to at
+// most beta_n); an explicit Euler step would go negative once h (gamma R^2 - eps_a) > 1 (a stiff
+// gamma). D gains the adhesive energy the bonds lost at that gap,
+//   D_{n+1} = D_n + gamma (beta_n^2 - beta_{n+1}^2) Phi(g_{n+1}) >= D_n,
+// so that the adhesive energy and D move together: E + D changes only by what the particle's
+// scheme itself does to E (the plain scheme's energy bookkeeping).
+inline void bond_step(const Bonding& b, double h, double gap_next, double& beta, double& spent) {
+  const double before = beta;
+  beta = before / (1.0 + h * damage_excess(b, gap_next));
+  spent += b.gamma * ((before - beta) * (before + beta)) * bond_potential(b, gap_next);
+}
+
 // The highest gap of a flight in the well with no damage, R = g (g <= L) and a constant force
 // f = -G: the motion keeps E_w = v^2/2 + G g + k g^2/2, k = gamma beta^2 > 0, and rises to the
 // root of G g + k g^2/2 = E_w, (sqrt(G^2 + 2 k E_w) - G)/k, written without cancellation for G > 0.

@@ -12,10 +12,18 @@
 // whose general force kind (ForceKind, force.hpp) always steps this way: DirectGeneral and
 // MoreauJeanGeneral, with z zero-sized (m = 0, the rates' loop runs no time) where the model has
 // no internal variables, the bits of the particle the same as the base method's alone.
+//
+// A bonding field that acts (bonded(), model.hpp) rides in z too, beta = z[kBondFraction] and
+// D = z[kBondEnergy]: the base method's force reads beta at the step's start for the pull (the
+// explicit reading above, scheme_flight.hpp), and the bonds then take one step of bond_step
+// (bonding.hpp), implicit Euler's closed form at the gap the particle's step ended at, which keeps
+// beta in [0, beta_n] for any h, where explicit Euler would not (h (gamma R^2 - eps_a) > 1 makes
+// it negative). Here and nowhere else: both steppers share it.
 #pragma once
 
 #include <array>
 #include <cstdint>
+#include <optional>
 
 #include "impact/forces/internal.hpp"
 #include "impact/methods/capabilities.hpp"
@@ -38,7 +46,10 @@ class WithInternal {
       : base_(model, law, h, params),
         rates_(model),
         model_internal_(with_internal(model, {}).z),
-        h_(h) {}
+        h_(h),
+        phi_(model.phi) {
+    if (bonded(model)) bonds_ = model.bonding;
+  }
 
   // The full initial state of a run from the particle's: z at the model's initial values.
   StateWithInternal initial_state(const State& s) const { return {s, model_internal_}; }
@@ -48,9 +59,9 @@ class WithInternal {
     base_.initialize(s, l);
   }
 
-  // m, the model's internal variables: 0 for a force of t or of (u, v) alone, whose failure
-  // message then names u and v alone (simulate.hpp).
-  std::size_t internal_count() const { return rates_.size(); }
+  // m, the model's internal variables (beta and D for a bonding field): 0 for a force of t or of
+  // (u, v) alone, whose failure message then names u and v alone (simulate.hpp).
+  std::size_t internal_count() const { return rates_.size() + (bonds_ ? 2 : 0); }
 
   StepInfo do_step(StateWithInternal& s, std::int64_t l) {
     std::array<double, kMaxInternal> rate{};
@@ -60,6 +71,7 @@ class WithInternal {
     const StepInfo info = base_.do_step(particle, l);
     static_cast<State&>(s) = particle;
     for (std::size_t i = 0; i < rates_.size(); ++i) s.z[i] += h_ * rate[i];
+    if (bonds_) bond_step(*bonds_, h_, s.u - phi_, s.z[kBondFraction], s.z[kBondEnergy]);
     return info;
   }
 
@@ -68,6 +80,8 @@ class WithInternal {
   InternalRates rates_;
   std::array<double, kMaxInternal> model_internal_;
   double h_;
+  double phi_;
+  std::optional<Bonding> bonds_;  // a bonding field that acts, or none
 };
 
 // The general force kind of direct and moreau_jean (ForceKind, force.hpp).
