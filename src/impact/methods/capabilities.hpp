@@ -67,8 +67,8 @@ const MethodInfo& reference_for(const Model& model);
 // Python's exact()) cannot be measured for `model`, as a refusal of the key that asks for what the
 // reference does not follow; nullopt when they can. It follows what a method with `reference`
 // takes, and no bonding field yet (its march carries no beta), although the methods with
-// `bonding` run one. Every surface asks this, so a new law or force that no reference takes is refused
-// there with exit 2, not measured wrong.
+// `bonding` run one. Every surface asks this, so a new law or force that no reference takes is
+// refused there with exit 2, not measured wrong.
 std::optional<Refusal> reference_refusal(const Model& model);
 // Whether the model's force expression reads u, v or an internal variable (a linear part is its
 // own capability).
