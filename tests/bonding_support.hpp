@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 #include <type_traits>
+#include <variant>
 #include <vector>
 
 #include "impact/loop/simulate.hpp"
@@ -30,6 +31,10 @@ inline Sampled run_bonded(const std::string& text, const std::vector<std::string
   const EventSink sink = [&](const Event& e) { out.events.push_back(e); };
   // A time-stepper's events are read off its steps, as `impact run --events` reads them.
   const bool own_events = attach_event_sink(stepper, sink);
+  // exact and event_driven date their own events; a time-stepper's come from its steps.
+  const bool time_stepper = std::holds_alternative<DirectParams>(out.scene.method) ||
+                            std::holds_alternative<MoreauJeanParams>(out.scene.method);
+  REQUIRE(own_events != time_stepper);
   StepEvents step_events(out.scene.model, out.scene.grid.h, sink);
   simulate(stepper, out.scene.initial, out.scene.grid,
            [&](std::int64_t l, const auto& s, const StepInfo& info) {
