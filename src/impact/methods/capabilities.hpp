@@ -6,6 +6,8 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
 #include "impact/methods/method_params.hpp"
@@ -55,8 +57,8 @@ struct Refusal {
 // chooses h itself, as work-precision does): the first row of the feature table (capabilities.cpp)
 // it refuses, in the order the scene reader reports them; nullopt when it takes the problem. The
 // scene reader, the sweep's points, make_stepper and the analyses all ask this.
-std::optional<Refusal> refusal(const MethodParams& method, const Model& model,
-                               std::optional<double> h = std::nullopt);
+std::optional<Refusal> refusal(const MethodParams& method, const Model& model, double h);
+std::optional<Refusal> refusal(const MethodParams& method, const Model& model);
 // The same refusal as a clause for a list of methods ("it takes a force of t only, and
 // force.expression reads u or v"); empty when `method` (by its default parameters) takes `model`.
 std::string refusal_reason(const MethodInfo& method, const Model& model);
@@ -87,7 +89,20 @@ const MethodInfo& method_of() {
 
 // The contact law a method applies to the model's floor, its family's reading of contact_law.hpp:
 // the law its stepper resolves in its constructor. Throws std::invalid_argument for a COR given to
-// penalty.
-ContactLaw contact_law(const Model& model, const MethodParams& params);
+// penalty. Inline: make_stepper asks it on every run.
+inline ContactLaw contact_law(const Model& model, const MethodParams& params) {
+  return std::visit(
+      [&](const auto& p) -> ContactLaw {
+        using Params = std::decay_t<decltype(p)>;
+        if constexpr (std::is_same_v<Params, DirectParams> ||
+                      std::is_same_v<Params, FbNewtonParams>)
+          return contact_law(model, SchemeLaw{});
+        else if constexpr (std::is_same_v<Params, PenaltyParams>)
+          return contact_law(model, ComplianceLaw{p.stiffness});
+        else
+          return contact_law(model, kElasticReading);
+      },
+      params);
+}
 
 }  // namespace impact

@@ -9,12 +9,11 @@
 
 namespace impact {
 
-AnyStepper make_stepper(const Model& given, double h, const MethodParams& params) {
-  if (const auto refused = refusal(params, given, h)) throw std::invalid_argument(refused->message);
-  // exact follows a linear force in closed form; the others take it as the force of the state it
-  // is, an expression (force.hpp).
-  const Model model =
-      std::holds_alternative<ExactParams>(params) ? given : linear_as_expression(given);
+namespace {
+
+// The stepper for a model as the method steps it (a linear force already an expression where the
+// method takes it as one).
+AnyStepper stepper_for(const Model& model, double h, const MethodParams& params) {
   // The law the method applies, read from the model once (capabilities.hpp) and given to the
   // time-steppers; exact and event_driven read Newton's law themselves, as their references do.
   const ContactLaw law = contact_law(model, params);
@@ -59,6 +58,18 @@ AnyStepper make_stepper(const Model& given, double h, const MethodParams& params
           return DirectLocated(model, law, h, p);
       },
       params);
+}
+
+}  // namespace
+
+AnyStepper make_stepper(const Model& model, double h, const MethodParams& params) {
+  if (const auto refused = refusal(params, model, h)) throw std::invalid_argument(refused->message);
+  // exact follows a linear force in closed form; the others take it as the force of the state it
+  // is, an expression (force.hpp). The model is copied only where it is rewritten: make_stepper
+  // runs once a run, and its cost is the whole cost of a run that replays a period.
+  if (model.linear && !std::holds_alternative<ExactParams>(params))
+    return stepper_for(linear_as_expression(model), h, params);
+  return stepper_for(model, h, params);
 }
 
 AnyStepper make_stepper(const Scene& scene) {
