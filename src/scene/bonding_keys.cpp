@@ -115,11 +115,10 @@ void check_bonding(const KeyReader& r, const toml::table& root, Scene& scene) {
       r.fail("bonding", "form",
              "\"fremond\" needs bonding.b, the viscosity of its damage law (a number > 0)");
     if (b.form == BondForm::product && !std::isnan(b.b)) {
-      std::string what = "= ";
-      what += shortest(b.b);
+      std::string what = shortest(b.b);
       what +=
-          " is read with form = \"fremond\" only: the product form has no viscosity; set "
-          "bonding.form = \"fremond\" or leave b out";
+          " given, but b is read with form = \"fremond\" only: the product form has no "
+          "viscosity; set bonding.form = \"fremond\" or leave b out";
       r.fail("bonding", "b", what);
     }
   }
