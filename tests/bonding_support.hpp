@@ -1,6 +1,6 @@
 // A bonded run through the library, kept step by step (its states with beta and D, and its
-// events), and the checks on it that every bonded method must pass. Shared by test_bonding.cpp and
-// test_bonding_steppers.cpp.
+// events), and the checks on it that every bonded method must pass. Shared by test_bonding.cpp,
+// test_bonding_steppers.cpp and test_bonding_fremond.cpp.
 #pragma once
 
 #include <catch2/catch.hpp>
@@ -66,6 +66,24 @@ inline void check_bonds_monotone(const Sampled& run) {
     beta = s.z[kBondFraction];
     spent = s.z[kBondEnergy];
   }
+}
+
+// max over the samples of |E + D + (the impacts' losses so far) - E(0)|, E with the bonds'
+// energy gamma beta^2 Phi(g) (model.hpp).
+inline double energy_balance_error(const Sampled& run) {
+  const double e0 = energy(run.scene.model, run.states.front());
+  double worst = 0, lost = 0;
+  std::size_t next = 0;
+  for (std::size_t l = 0; l < run.states.size(); ++l) {
+    const double t = run.scene.grid.t(static_cast<std::int64_t>(l));
+    for (; next < run.events.size() && run.events[next].t <= t; ++next)
+      if (run.events[next].kind == EventKind::impact)
+        lost += 0.5 * (run.events[next].v_before * run.events[next].v_before -
+                       run.events[next].v_after * run.events[next].v_after);
+    const StateWithInternal& s = run.states[l];
+    worst = std::fmax(worst, std::fabs(energy(run.scene.model, s) + s.z[kBondEnergy] + lost - e0));
+  }
+  return worst;
 }
 
 }  // namespace impact::testing

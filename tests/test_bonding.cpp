@@ -30,24 +30,6 @@ const std::string kWell = "gamma = 100.0\nL = 1e6\neps_a = 1e6\nbeta0 = 1.0\n";
 // Bonds that break above the gap sqrt(eps_a/gamma) = 0.0224 and saturate at L = 0.03.
 const std::string kBreaking = "gamma = 100.0\nL = 0.03\neps_a = 0.05\nbeta0 = 1.0\n";
 
-// max over the samples of |E + D + (the impacts' losses so far) - E(0)|, E with the bonds'
-// energy gamma beta^2 Phi(g) (model.hpp).
-double energy_balance_error(const Sampled& run) {
-  const double e0 = energy(run.scene.model, run.states.front());
-  double worst = 0, lost = 0;
-  std::size_t next = 0;
-  for (std::size_t l = 0; l < run.states.size(); ++l) {
-    const double t = run.scene.grid.t(static_cast<std::int64_t>(l));
-    for (; next < run.events.size() && run.events[next].t <= t; ++next)
-      if (run.events[next].kind == EventKind::impact)
-        lost += 0.5 * (run.events[next].v_before * run.events[next].v_before -
-                       run.events[next].v_after * run.events[next].v_after);
-    const StateWithInternal& s = run.states[l];
-    worst = std::fmax(worst, std::fabs(energy(run.scene.model, s) + s.z[kBondEnergy] + lost - e0));
-  }
-  return worst;
-}
-
 }  // namespace
 
 TEST_CASE("bonding: exact's impacts in the well with no damage come every 2 atan(10/9.81)/10",

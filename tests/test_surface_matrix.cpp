@@ -80,6 +80,17 @@ const std::vector<Feature> kFeatures = {
      "\"direct\"\n[force]\nf = -9.81\n[floor]\ncor = 0.9\n[bonding]\ngamma = 100.0\n"
      "L = 0.03\neps_a = 0.05\nbeta0 = 1.0\n"
      "[output]\nchannels = [\"u\", \"v\", \"N\", \"E\", \"beta\", \"D\"]\n"},
+    // The Frémond form of the field (bonding.form, bonding.b), with both kinds of method.
+    {"bonding field, fremond",
+     "[initial]\nu0 = 0.0\nv0 = 1.0\n[time]\nT = 0.5\nh = 1e-3\n[method]\nname = "
+     "\"event_driven\"\n[force]\nf = -9.81\n[floor]\ncor = 0.9\n[bonding]\ngamma = 100.0\n"
+     "L = 0.03\neps_a = 0.05\nbeta0 = 1.0\nform = \"fremond\"\nb = 0.01\n"
+     "[output]\nchannels = [\"u\", \"v\", \"N\", \"E\", \"beta\", \"D\"]\n"},
+    {"bonding field, fremond, moreau_jean",
+     "[initial]\nu0 = 0.0\nv0 = 1.0\n[time]\nT = 0.5\nh = 1e-3\n[method]\nname = "
+     "\"moreau_jean\"\n[force]\nf = -9.81\n[floor]\ncor = 0.9\n[bonding]\ngamma = 100.0\n"
+     "L = 0.03\neps_a = 0.05\nbeta0 = 1.0\nform = \"fremond\"\nb = 0.01\n"
+     "[output]\nchannels = [\"u\", \"v\", \"N\", \"E\", \"beta\", \"D\"]\n"},
     // The two-mass chain is a library model: no scene key gives it, so every surface that reads a
     // scene refuses one that asks for it.
     {"the chain", kHead + "[chain]\nm1 = 1.0\n"},

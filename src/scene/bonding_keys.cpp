@@ -17,11 +17,16 @@ Bonding& bonding(Scene& s) {
 }
 
 KeyValue bonding_value(const Scene& s, double Bonding::*member) {
-  if (!s.model.bonding || std::isinf(*s.model.bonding.*member)) return KeyValue();
+  if (!s.model.bonding || !std::isfinite(*s.model.bonding.*member)) return KeyValue();
   return *s.model.bonding.*member;
 }
 
 constexpr std::string_view kOnly = "a bonding field";
+
+std::span<const std::string_view> bond_forms() {
+  static constexpr std::string_view kForms[] = {"product", "fremond"};
+  return kForms;
+}
 
 // Left out: gamma = 0 (no field), L none (no saturation, R(g) = g), eps_a = 0, beta0 = 1.
 const KeySpec kBondingKeys[] = {
@@ -65,6 +70,36 @@ const KeySpec kBondingKeys[] = {
      .meaning = "the fraction of active bonds at t = 0",
      .get = [](const Scene& s) { return bonding_value(s, &Bonding::beta0); },
      .set = [](Scene& s, const KeyValue& v) { bonding(s).beta0 = std::get<double>(v); }},
+    {.table = "bonding",
+     .key = "form",
+     .type = KeyType::name,
+     .choices = bond_forms,
+     .also = "fremond needs bonding.b",
+     .only_some = kOnly,
+     .only_with = &Capabilities::bonding,
+     .meaning = "the damage law: product, beta' = -beta (gamma R^2 - eps_a)_+; fremond "
+                "(LMGC90's MAC_CZM), b beta' = -(beta gamma R^2 - eps_a)_+",
+     // Left out, and so not written back, for the product form: a scene's sidecar as before.
+     .get = [](const Scene& s) -> KeyValue {
+       if (!s.model.bonding || s.model.bonding->form != BondForm::fremond) return KeyValue();
+       return std::string("fremond");
+     },
+     .set =
+         [](Scene& s, const KeyValue& v) {
+           bonding(s).form =
+               std::get<std::string>(v) == "fremond" ? BondForm::fremond : BondForm::product;
+         }},
+    {.table = "bonding",
+     .key = "b",
+     .type = KeyType::number,
+     .range = {.lo = 0.0, .lo_open = true},
+     .also = "read with form = \"fremond\" only, and required there",
+     .only_some = kOnly,
+     .only_with = &Capabilities::bonding,
+     .meaning = "the viscosity of the Frémond form's damage law, b beta' = "
+                "-(beta gamma R^2 - eps_a)_+",
+     .get = [](const Scene& s) { return bonding_value(s, &Bonding::b); },
+     .set = [](Scene& s, const KeyValue& v) { bonding(s).b = std::get<double>(v); }},
 };
 
 }  // namespace
@@ -74,6 +109,19 @@ std::span<const KeySpec> bonding_keys() {
 }
 
 void check_bonding(const KeyReader& r, const toml::table& root, Scene& scene) {
+  if (scene.model.bonding) {
+    const Bonding& b = *scene.model.bonding;
+    if (b.form == BondForm::fremond && std::isnan(b.b))
+      r.fail("bonding", "form",
+             "\"fremond\" needs bonding.b, the viscosity of its damage law (a number > 0)");
+    if (b.form == BondForm::product && !std::isnan(b.b)) {
+      std::string what = shortest(b.b);
+      what +=
+          " given, but b is read with form = \"fremond\" only: the product form has no "
+          "viscosity; set bonding.form = \"fremond\" or leave b out";
+      r.fail("bonding", "b", what);
+    }
+  }
   if (!bonded(scene.model)) return;
   const std::string where = "[bonding]";
   if (!scene.model.internal.empty())

@@ -12,6 +12,12 @@
 // (1 - COR^2) V^2 / 2 aside). With gamma = 0 or beta0 = 0 the pull and the damage vanish
 // identically: the model is the paper's, and the package runs it as the paper's (bonded()).
 //
+// The Frémond form (LMGC90's MAC_CZM law; paper_notes/bonding_field.md) puts beta inside the
+// bracket, with a viscosity b > 0:
+//   b beta' = -(beta gamma R(g)^2 - eps_a)_+,
+// the same pull and energy, so the same dE/dt = 2 gamma beta beta' Phi(g) <= 0. Its damage stops
+// at beta = eps_a/(gamma R^2) at a fixed opening, where the product form decays to 0.
+//
 // Plain data and closed forms only; C++17, since model.hpp includes it (the Siconos peer).
 #pragma once
 
@@ -21,12 +27,19 @@
 
 namespace impact {
 
+// The damage law: the product form beta' = -beta (gamma R^2 - eps_a)_+, or the Frémond form
+// b beta' = -(beta gamma R^2 - eps_a)_+.
+enum class BondForm { product, fremond };
+
 struct Bonding {
   double gamma = 0.0;  // adhesion stiffness, per unit time squared (>= 0)
   // bond length: the pull saturates at gap L (> 0); infinity: never
   double L = std::numeric_limits<double>::infinity();
-  double eps_a = 0.0;  // energy density below which bonds do not break (>= 0)
-  double beta0 = 1.0;  // the fraction of active bonds at t = 0, in [0, 1]
+  double eps_a = 0.0;                 // energy density below which bonds do not break (>= 0)
+  double beta0 = 1.0;                 // the fraction of active bonds at t = 0, in [0, 1]
+  BondForm form = BondForm::product;  // where beta stands in the damage law
+  // the Frémond form's viscosity (> 0, per unit time); NaN: not given (the product form has none)
+  double b = std::numeric_limits<double>::quiet_NaN();
 };
 
 // Whether the bonding field acts at all: gamma beta0^2 != 0. Otherwise nothing of it is run.
@@ -55,12 +68,16 @@ inline double adhesive_pull(const Bonding& b, double beta, double gap) {
   return b.gamma * beta * beta * bond_reach(b, gap);
 }
 
-// beta from the logarithm ln(beta / beta0) that an ODE carries (exactly beta0 while it is 0, i.e.
-// while no bond broke), and back.
-inline double bond_fraction(const Bonding& b, double log_ratio) {
-  return b.beta0 * std::exp(log_ratio);
+// beta from the variable an ODE carries for it, and back. The product form carries the logarithm
+// ln(beta / beta0) (exactly beta0 while it is 0, i.e. while no bond broke; beta > 0 always). The
+// Frémond form carries beta itself, read in [0, 1]: its rate is not proportional to beta, so the
+// logarithm's rate would blow up as beta -> 0, and an explicit stage may overshoot below 0.
+inline double bond_fraction(const Bonding& b, double carried) {
+  if (b.form == BondForm::fremond) return std::clamp(carried, 0.0, 1.0);
+  return b.beta0 * std::exp(carried);
 }
-inline double bond_log_ratio(const Bonding& b, double beta) {
+inline double bond_carried(const Bonding& b, double beta) {
+  if (b.form == BondForm::fremond) return beta;
   return std::log(beta / b.beta0);
 }
 
@@ -68,6 +85,33 @@ inline double bond_log_ratio(const Bonding& b, double beta) {
 inline double damage_excess(const Bonding& b, double gap) {
   const double r = bond_reach(b, gap);
   return std::max(b.gamma * r * r - b.eps_a, 0.0);
+}
+
+// The Frémond form's beta' = -(beta gamma R^2 - eps_a)_+ / b.
+inline double fremond_rate(const Bonding& b, double beta, double gap) {
+  const double r = bond_reach(b, gap);
+  return -std::max(beta * (b.gamma * (r * r)) - b.eps_a, 0.0) / b.b;
+}
+
+// The rates of the carried variable (bond_fraction) and of D, the energy spent on bonds,
+// D' = -2 gamma beta beta' Phi(g), at beta and the gap g.
+struct BondRates {
+  double carried, spent;
+};
+inline BondRates bond_rates(const Bonding& b, double beta, double gap) {
+  if (b.form == BondForm::fremond) {
+    const double rate = fremond_rate(b, beta, gap);
+    return {rate, -2.0 * b.gamma * beta * rate * bond_potential(b, gap)};
+  }
+  const double excess = damage_excess(b, gap);
+  return {-excess, 2.0 * adhesive_energy(b, beta, gap) * excess};
+}
+
+// Keeps an ODE step's carried variable from raising beta above the step's start (and, Frémond,
+// from taking it below 0): rk8pd's weights are not all positive.
+inline double bond_carried_monotone(const Bonding& b, double carried, double at_start) {
+  if (b.form == BondForm::fremond) return std::fmax(std::fmin(carried, at_start), 0.0);
+  return std::fmin(carried, at_start);
 }
 
 // One step of the bonds in a time-stepper (WithInternal, with_internal.hpp), from (beta_n, D_n)
@@ -82,9 +126,25 @@ inline double damage_excess(const Bonding& b, double gap) {
 //   D_{n+1} = D_n + gamma (beta_n^2 - beta_{n+1}^2) Phi(g_{n+1}) >= D_n,
 // so that the adhesive energy and D move together: E + D changes only by what the particle's
 // scheme itself does to E (the plain scheme's energy bookkeeping).
+//
+// The Frémond form takes MAC_CZM's update (LMGC90, src/Core/shared/mod_tact_behav.f90, updt_CZM),
+// implicit Euler of b beta' = -(beta gamma R^2 - eps_a) at g_{n+1}, in the normal direction alone:
+//   beta_{n+1} = (h eps_a + beta_n b) / (b + h gamma R(g_{n+1})^2),
+// kept only where it does not raise beta and damage is on at beta_n (eps_a <= beta_n gamma R^2;
+// the two conditions are the same in exact arithmetic), else beta_{n+1} = beta_n. It lies in
+// (0, beta_n] when taken: a weighted mean of beta_n and eps_a/(gamma R^2) <= beta_n.
+inline double fremond_update(const Bonding& b, double h, double gap_next, double beta) {
+  const double r = bond_reach(b, gap_next);
+  const double opening = b.gamma * (r * r);
+  const double next = (h * b.eps_a + beta * b.b) / (b.b + h * opening);
+  return next <= beta && b.eps_a <= beta * opening ? next : beta;
+}
 inline void bond_step(const Bonding& b, double h, double gap_next, double& beta, double& spent) {
   const double before = beta;
-  beta = before / (1.0 + h * damage_excess(b, gap_next));
+  if (b.form == BondForm::fremond)
+    beta = fremond_update(b, h, gap_next, before);
+  else
+    beta = before / (1.0 + h * damage_excess(b, gap_next));
   spent += b.gamma * ((before - beta) * (before + beta)) * bond_potential(b, gap_next);
 }
 

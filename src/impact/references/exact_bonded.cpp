@@ -35,8 +35,10 @@ std::optional<std::string> no_damage_well_refusal(const Model& model, const Stat
   const Bonding& b = *model.bonding;
   const double k = b.gamma * b.beta0 * b.beta0;
   const double height = well_height(k, -model.f, initial.u - model.phi, initial.v);
-  // Damage starts where gamma g^2 > eps_a (bonding.hpp), the pull saturates past L.
-  const double undamaged = std::sqrt(b.eps_a / b.gamma);
+  // Damage starts where gamma g^2 > eps_a in the product form, where beta0 gamma g^2 > eps_a in
+  // the Frémond form (bonding.hpp; beta = beta0 until it starts); the pull saturates past L.
+  const bool fremond = b.form == BondForm::fremond;
+  const double undamaged = std::sqrt(b.eps_a / (fremond ? b.gamma * b.beta0 : b.gamma));
   if (height <= b.L && height <= undamaged) return std::nullopt;
   std::string why = "method 'exact' follows a bonding field only in the well with no damage, and ";
   why += "this run's first flight rises to the gap ";
@@ -45,7 +47,8 @@ std::optional<std::string> no_damage_well_refusal(const Model& model, const Stat
     why += ", past bonding.L = ";
     why += shortest(b.L);
   } else {
-    why += ", where gamma g^2 > bonding.eps_a (bonds break past the gap ";
+    why += fremond ? ", where beta0 gamma g^2 > bonding.eps_a (bonds break past the gap "
+                   : ", where gamma g^2 > bonding.eps_a (bonds break past the gap ";
     why += shortest(undamaged);
     why += ")";
   }

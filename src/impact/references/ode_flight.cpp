@@ -31,10 +31,10 @@ int FlightRhs::operator()(double t, const double y[], double dydt[]) const {
   dydt[1] = force.at(t, s);
   if (bonds) {
     const double beta = bond_fraction(*bonds, y[bond_at + kBondFraction]);
-    const double excess = damage_excess(*bonds, y[0]);
+    const BondRates rates = bond_rates(*bonds, beta, y[0]);
     dydt[1] -= adhesive_pull(*bonds, beta, y[0]);
-    dydt[bond_at + kBondFraction] = -excess;
-    dydt[bond_at + kBondEnergy] = 2.0 * adhesive_energy(*bonds, beta, y[0]) * excess;
+    dydt[bond_at + kBondFraction] = rates.carried;
+    dydt[bond_at + kBondEnergy] = rates.spent;
   }
   return GSL_SUCCESS;
 }
@@ -59,15 +59,15 @@ OdeLaw::OdeLaw(const Model& model, const OdeSettings& settings)
 void OdeLaw::set_internal(const std::array<double, kMaxInternal>& z) {
   z_a_ = z_b_ = z;
   if (bonds_)
-    z_a_[rate_count_ + kBondFraction] = bond_log_ratio(*bonds_, z[rate_count_ + kBondFraction]);
+    z_a_[rate_count_ + kBondFraction] = bond_carried(*bonds_, z[rate_count_ + kBondFraction]);
   z_b_ = z_a_;
 }
 
 void OdeLaw::keep_bonds_monotone(std::array<double, kMaxInternal>& z) const {
   if (!bonds_) return;
-  double& log_beta = z[rate_count_ + kBondFraction];
+  double& carried = z[rate_count_ + kBondFraction];
   double& spent = z[rate_count_ + kBondEnergy];
-  log_beta = std::fmin(log_beta, z_a_[rate_count_ + kBondFraction]);
+  carried = bond_carried_monotone(*bonds_, carried, z_a_[rate_count_ + kBondFraction]);
   spent = std::fmax(spent, z_a_[rate_count_ + kBondEnergy]);
 }
 

@@ -50,12 +50,14 @@
 // certified: z moves by at most W sup |g| inside the window, which its bound does not see).
 //
 // The bonding field (bonding.hpp): the pull -gamma beta^2 R(g) joins f in the flight, and the
-// flight carries ln(beta/beta0) and D (the energy spent on bonds) after the internal variables:
-// (ln beta)' = -(gamma R^2 - eps_a)_+ keeps beta > 0 (and beta0 exactly while no bond breaks), and
-// D' = 2 gamma beta^2 Phi(g) (gamma R^2 - eps_a)_+. An accepted step's ln beta is clamped to at
-// most its start's and D to at least it, so that beta never rises and D never falls through the
+// flight carries beta's variable (bond_fraction) and D (the energy spent on bonds) after the
+// internal variables. The product form carries ln(beta/beta0): (ln beta)' = -(gamma R^2 - eps_a)_+
+// keeps beta > 0 (and beta0 exactly while no bond breaks). The Frémond form carries beta itself,
+// beta' = -(beta gamma R^2 - eps_a)_+ / b, read in [0, 1]. D' = -2 gamma beta beta' Phi(g). An
+// accepted step's variable is clamped so that beta is at most its start's (and, Frémond, at least
+// 0) and D to at least its start's, so that beta never rises and D never falls through the
 // integrator's error (rk8pd's weights are not all positive). On the floor R(0) = 0: no pull, no
-// damage, beta and D stay as they arrived. internal_at(t) gives beta, not its logarithm
+// damage, beta and D stay as they arrived. internal_at(t) gives beta, not the carried variable
 // (z[kBondFraction], model.hpp).
 //
 // The end of the run. f is evaluated on [t0, end] only (OdeSettings::end; a force such as
@@ -86,16 +88,16 @@ struct OdeSettings {
   double end = std::numeric_limits<double>::infinity();  // the last time f is evaluated at
 };
 
-// The flight's right-hand side (ode_flight.cpp), y = (u - phi, v, z, ln(beta/beta0), D):
-// y' = (v, f(t, u, v, z) - gamma beta^2 R(u - phi), g(t, u, v, z), -(gamma R^2 - eps_a)_+,
-// 2 gamma beta^2 Phi (gamma R^2 - eps_a)_+) (bonding.hpp).
+// The flight's right-hand side (ode_flight.cpp), y = (u - phi, v, z, beta's variable, D):
+// y' = (v, f(t, u, v, z) - gamma beta^2 R(u - phi), g(t, u, v, z), bond_rates) (bonding.hpp;
+// the variable is ln(beta/beta0) in the product form, beta in the Frémond form).
 struct FlightRhs {
   int operator()(double t, const double y[], double dydt[]) const;
 
   ForceFunction force;
   std::optional<InternalRates> rates;  // the internal variables' rates, if any
   std::optional<Bonding> bonds;        // a bonding field that acts
-  std::size_t bond_at;                 // where ln beta is in y
+  std::size_t bond_at;                 // where beta's variable is in y
   double phi;
 };
 
@@ -122,8 +124,8 @@ class OdeLaw {
     if (rate_count_ > 0) flight_.rhs().force.set_internal(floor_internal(t));
     return flight_.rhs().force.at(t, rest_);
   }
-  // f at the gap and velocity y = (u - phi, v) and the internal variables z (ln beta for the
-  // bonds, ln(beta/beta0)), the bonds' pull included: the particle's acceleration in flight.
+  // f at the gap and velocity y = (u - phi, v) and the internal variables z (the bonds' carried
+  // variable, bond_fraction), the bonds' pull included: the particle's acceleration in flight.
   double force_on(double t, const State& y, const std::array<double, kMaxInternal>& z) const {
     if (rate_count_ > 0) flight_.rhs().force.set_internal(z);
     const double f = flight_.rhs().force.at(t, {phi_ + y.u, y.v});
@@ -144,7 +146,7 @@ class OdeLaw {
   void take_step();
   // The state and internal variables at t in the current ODE step.
   void dense(double t, State& y, std::array<double, kMaxInternal>& z) const;
-  // z at t as the ODE carries it (ln beta for the bonds).
+  // z at t as the ODE carries it (the bonds' carried variable, bond_fraction).
   std::array<double, kMaxInternal> floor_internal(double t) const;
   // Keeps the bonds' beta from rising and D from falling over the current step (see above).
   void keep_bonds_monotone(std::array<double, kMaxInternal>& z) const;
