@@ -141,10 +141,15 @@ inline double fremond_update(const Bonding& b, double h, double gap_next, double
 }
 inline void bond_step(const Bonding& b, double h, double gap_next, double& beta, double& spent) {
   const double before = beta;
-  if (b.form == BondForm::fremond)
+  if (b.form == BondForm::fremond) {
     beta = fremond_update(b, h, gap_next, before);
-  else
-    beta = before / (1.0 + h * damage_excess(b, gap_next));
+  } else {
+    const double excess = damage_excess(b, gap_next);
+    // No damage in this step: beta / 1 and D + 0 are beta and D bit for bit, and the division,
+    // whose latency would chain each step to the next, is skipped (the well with no damage).
+    if (excess == 0.0) return;
+    beta = before / (1.0 + h * excess);
+  }
   spent += b.gamma * ((before - beta) * (before + beta)) * bond_potential(b, gap_next);
 }
 

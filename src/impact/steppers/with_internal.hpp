@@ -65,7 +65,8 @@ class WithInternal {
 
   StepInfo do_step(StateWithInternal& s, std::int64_t l) {
     std::array<double, kMaxInternal> rate{};
-    rates_.evaluate(static_cast<double>(l) * h_, s, rate);
+    // A call, skipped where there are no rates (a bonding field or a force of the state alone).
+    if (rates_.size() != 0) rates_.evaluate(static_cast<double>(l) * h_, s, rate);
     base_.set_internal(s.z);
     State particle = s;
     const StepInfo info = base_.do_step(particle, l);
