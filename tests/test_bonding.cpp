@@ -236,4 +236,17 @@ TEST_CASE("bonding: a bad [bonding] value exits 2 naming the key, its value and 
   r = dir.run("run s.toml -o -");
   CHECK(r.code == 2);
   CHECK_THAT(r.err, Contains("bonding.eps_a"));
+  // The reference follows no bonding field yet: a run and a sweep with the errors against it
+  // refuse the scene, the sweep naming the first point whose field acts (gamma = 0 has none).
+  dir.write("s.toml", bonded_scene("event_driven", kBreaking));
+  r = dir.run("run s.toml -o out.csv --against exact");
+  CHECK(r.code == 2);
+  CHECK_THAT(r.err, Contains("--against exact") && Contains("bonding field"));
+  CHECK(dir.entries().count("out.csv") == 0);
+  r = dir.run("sweep s.toml --vary bonding.gamma=0,100 -o out.csv --against exact");
+  INFO(r.err);
+  CHECK(r.code == 2);
+  CHECK_THAT(r.err, Contains("point 2 of 2 (bonding.gamma=100)") && Contains("--against exact") &&
+                        Contains("bonding field"));
+  CHECK(dir.entries().count("out.csv") == 0);
 }
