@@ -246,7 +246,15 @@ TEST_CASE("bonding: a bad [bonding] value exits 2 naming the key, its value and 
   r = dir.run("sweep s.toml --vary bonding.gamma=0,100 -o out.csv --against exact");
   INFO(r.err);
   CHECK(r.code == 2);
-  CHECK_THAT(r.err, Contains("point 2 of 2 (bonding.gamma=100)") && Contains("--against exact") &&
-                        Contains("bonding field"));
+  CHECK_THAT(r.err, Contains("point 2 of 2 (bonding.gamma=100)") &&
+                        Contains("--set bonding.gamma=100: bonding.gamma = 100") &&
+                        Contains("--against exact") && Contains("bonding field"));
+  CHECK(dir.entries().count("out.csv") == 0);
+  // Not varied: the file that gives the key is named.
+  r = dir.run("sweep s.toml --vary initial.v0=1,2 -o out.csv --against exact");
+  INFO(r.err);
+  CHECK(r.code == 2);
+  CHECK_THAT(r.err, Contains("point 1 of 2 (initial.v0=1)") && Contains("s.toml: bonding.gamma") &&
+                        Contains("--against exact"));
   CHECK(dir.entries().count("out.csv") == 0);
 }

@@ -20,7 +20,6 @@
 #include "impact/methods/capabilities.hpp"
 #include "impact/run/run_result.hpp"
 #include "impact/run/summary.hpp"
-#include "scene/scene_error.hpp"
 
 namespace impact {
 namespace {
@@ -50,18 +49,9 @@ class Runner {
     points_ = shard_points(grid, shard);
     // A point whose model the reference does not follow is refused before any runs, as a run
     // with the errors against the exact solution is: not measured wrong, nor failed point by point.
-    if (against_exact) {
-      Scene scene = grid.base();
-      for (std::int64_t i = 0; i < grid.size(); ++i) {
-        grid.apply(i, scene);
-        if (const auto r = reference_refusal(scene.model)) {
-          std::string what = grid.describe(i);
-          what += ": the errors against the exact solution (--against exact): ";
-          what += r->message;
-          throw SceneError(what);
-        }
-      }
-    }
+    if (against_exact)
+      grid.require([](const Scene& scene) { return reference_refusal(scene.model); },
+                   "the errors against the exact solution (--against exact)");
     // Points on one grid must be close in the order to share a chunk: a sweep whose grid changes
     // every few points runs point by point, in chunks small enough for every thread to get some.
     const bool together = !against_exact && ensemble_kind(grid.base()) &&

@@ -338,6 +338,24 @@ std::vector<std::string> SweepGrid::overrides(std::int64_t i) const {
   return sets;
 }
 
+void SweepGrid::require(const std::function<std::optional<Refusal>(const Scene&)>& refuses,
+                        std::string_view context) const {
+  Scene scene = base_;
+  for (std::int64_t i = 0; i < size_; ++i) {
+    set_values(i, scene);
+    if (const auto refused = refuses(scene)) {
+      std::string what(context);
+      what += ": ";
+      what += refused->message;
+      // The value is shown where an axis gives it (fail() shows no other key's value).
+      const std::string name = std::string(refused->table) + "." + std::string(refused->key);
+      const bool varied = std::any_of(axes_.begin(), axes_.end(),
+                                      [&](const SweepAxis& axis) { return axis.key() == name; });
+      fail(i, refused->table, refused->key, what, varied);
+    }
+  }
+}
+
 std::string SweepGrid::describe(std::int64_t i) const {
   std::string text = "point " + std::to_string(i + 1) + " of " + std::to_string(size_) + " (";
   const auto sets = overrides(i);

@@ -7,11 +7,13 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "impact/methods/capabilities.hpp"
 #include "impact/run/scene.hpp"
 #include "read_scene.hpp"
 #include "scene_error.hpp"
@@ -100,6 +102,12 @@ class SweepGrid {
   std::vector<std::string> overrides(std::int64_t i) const;
   // "point 3 of 41 (time.h=0.0001)", for messages.
   std::string describe(std::int64_t i) const;
+  // Throws the SceneError of the first point that `refuses` (a refusal of capabilities.hpp), as a
+  // point's bad value is refused: its table.key, where the value came from, then `context` and
+  // the refusal's message. For what the sweep asks beside its scene (the errors against the
+  // reference).
+  void require(const std::function<std::optional<Refusal>(const Scene&)>& refuses,
+               std::string_view context) const;
 
  private:
   // What every constructor does before it has a scene: the axes' keys and the strides.
