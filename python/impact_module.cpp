@@ -21,6 +21,7 @@
 #include "impact/output/channels.hpp"
 #include "impact/run/error_norms.hpp"
 #include "impact/run/run_scene.hpp"
+#include "impact/run/step_events.hpp"
 #include "impact/version.hpp"
 #include "module_docs.hpp"
 #include "module_gil.hpp"
@@ -142,7 +143,8 @@ py::dict events(py::handle scene, py::handle set, py::handle method) {
   Run loaded = without_gil([&] { return load(source); });
   const Model& model = loaded.scene.model;
   std::vector<double> t, before, after;
-  std::vector<std::vector<double>> internal(model.internal.size());
+  const std::vector<std::string> variables = event_variables(model);
+  std::vector<std::vector<double>> internal(variables.size());
   std::vector<EventKind> kinds;
   RunOutputs outputs;
   outputs.events = [&](const Event& e) {
@@ -159,11 +161,12 @@ py::dict events(py::handle scene, py::handle set, py::handle method) {
   for (EventKind k : kinds) names.append(std::string(event_name(k)));
   py::dict out;
   out["t"] = give(std::move(t));
-  out["kind"] = py::module_::import("numpy").attr("array")(names, "U6");
+  // U7: the longest kind's name, capture
+  out["kind"] = py::module_::import("numpy").attr("array")(names, "U7");
   out["v_before"] = give(std::move(before));
   out["v_after"] = give(std::move(after));
   for (std::size_t i = 0; i < internal.size(); ++i)
-    out[py::str(name_of(model, i))] = give(std::move(internal[i]));
+    out[py::str(variables[i])] = give(std::move(internal[i]));
   return out;
 }
 

@@ -38,10 +38,11 @@ inline constexpr const char* kRunDoc =
 inline constexpr const char* kEventsDoc =
     "events(scene: str | os.PathLike | dict, *, set: dict[str, object] | list[str] | None = "
     "None, method: str | None = None) -> dict\n\n"
-    "The impacts, sticks and lifts of a run, as `impact run --events` writes them. Returns a "
-    "dict of numpy.ndarray: 't' (float64), 'kind' (str: 'impact', 'stick' or 'lift'), "
-    "'v_before', 'v_after' (float64) and each internal variable at the event under its name "
-    "(float64).\n\n"
+    "The impacts, sticks and lifts of a run (and a bonded run's debond, capture and escape), as "
+    "`impact run --events` writes them. Returns a dict of numpy.ndarray: 't' (float64), 'kind' "
+    "(str: 'impact', 'stick', 'lift', 'debond', 'capture' or 'escape'), 'v_before', 'v_after' "
+    "(float64) and each internal variable at the event under its name (float64; a bonded run's "
+    "'beta' and 'D').\n\n"
     "Raises SceneError, NumericalError, KeyboardInterrupt (see the module's help).";
 
 inline constexpr const char* kExactDoc =

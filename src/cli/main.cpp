@@ -82,8 +82,9 @@ int main(int argc, char** argv) {
       "Also write the run's events as CSV to this file ('-': standard output, when --out is a "
       "file), header t,kind,v_before,v_after, one row per impact, stick (the particle comes to "
       "rest on the floor) or lift (it leaves the floor after resting); exact events where the "
-      "method knows them, else read off the contact steps (docs/events.md). "
-      "Written as --out is.");
+      "method knows them, else read off the contact steps (docs/events.md). With [bonding] also "
+      "debond (beta falls to bonding.debond_below), capture (a flight turns back to the floor) "
+      "and escape (f = 0: it never comes back), and columns beta,D. Written as --out is.");
   run_cmd
       ->add_option("--against", against,
                    "Also measure the run against a reference solution and print the errors on "

@@ -263,7 +263,9 @@ EventsData read_events(CsvLines& lines, const std::string& header) {
     const auto kind =
         std::find(std::begin(EventsData::kKinds), std::end(EventsData::kKinds), row[1]) -
         std::begin(EventsData::kKinds);
-    if (kind == 3) lines.reject("kind = '" + cut(row[1]) + "' (allowed: impact, stick, lift)");
+    if (kind == EventsData::kCount)
+      lines.reject("kind = '" + cut(row[1]) +
+                   "' (allowed: impact, stick, lift, debond, capture, escape)");
     const double t = number(lines, row[0], "t");
     events.before[kind].add(t, number(lines, row[2], "v_before"));
     events.after[kind].add(t, number(lines, row[3], "v_after"));

@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <cstdio>
+#include <iterator>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -112,14 +113,16 @@ struct RunData {
 RunData read_run(CsvLines& lines, const std::string& header);
 
 // An events CSV: v_before and v_after against t, one pair of curves per kind (impact, stick,
-// lift), and each internal variable at the events, one curve per kind; the t of the kept points
-// mark the events on a run's panels.
+// lift, and a bonded run's debond, capture, escape: event.hpp), and each internal variable at the
+// events, one curve per kind; the t of the kept points mark the events on a run's panels.
 struct EventsData {
-  static constexpr const char* kKinds[] = {"impact", "stick", "lift"};
-  Curve before[3], after[3];
-  std::int64_t count[3] = {};
-  std::vector<std::string> internal;                  // the internal variables' names
-  std::vector<std::array<Curve, 3>> internal_curves;  // [variable][kind]
+  static constexpr const char* kKinds[] = {"impact", "stick",   "lift",
+                                           "debond", "capture", "escape"};
+  static constexpr std::size_t kCount = std::size(kKinds);
+  Curve before[kCount], after[kCount];
+  std::int64_t count[kCount] = {};
+  std::vector<std::string> internal;                       // the internal variables' names
+  std::vector<std::array<Curve, kCount>> internal_curves;  // [variable][kind]
 };
 EventsData read_events(CsvLines& lines, const std::string& header);
 bool is_events_header(const std::string& header);

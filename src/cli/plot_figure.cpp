@@ -12,8 +12,11 @@ namespace impact::cli {
 namespace {
 
 constexpr const char* kRunColour = "'#0072B2'";
-// Okabe-Ito colours: the event kinds (impact, stick, lift) and a sweep's curves.
-constexpr const char* kKindColours[] = {"'#D55E00'", "'#009E73'", "'#CC79A7'"};
+// Okabe-Ito colours: the event kinds (impact, stick, lift, debond, capture, escape) and a sweep's
+// curves.
+constexpr const char* kKindColours[] = {"'#D55E00'", "'#009E73'", "'#CC79A7'",
+                                        "'#000000'", "'#0072B2'", "'#E69F00'"};
+static_assert(std::size(kKindColours) == EventsData::kCount);
 constexpr const char* kCurveColours[] = {"'#0072B2'", "'#D55E00'", "'#009E73'", "'#CC79A7'",
                                          "'#E69F00'", "'#56B4E9'", "'#000000'", "'#999999'"};
 static_assert(std::size(kCurveColours) == kMaxSweepCurves);
@@ -157,7 +160,7 @@ Figure run_figure(const RunData& run, const RunData* against, const EventsData* 
       high = std::max(high, reference->high());
     }
     if (events)
-      for (std::size_t k = 0; k < 3; ++k)
+      for (std::size_t k = 0; k < EventsData::kCount; ++k)
         if (events->count[k] > 0)
           panel.series.push_back(event_marks(events->before[k], low, high, k, events->count[k]));
     const std::string colour = std::string(" lc rgb ") + style.colour;
@@ -185,9 +188,11 @@ Figure events_figure(const EventsData& events) {
   figure.title.push_back({"", Name::csv});
   std::string counts;
   Panel panel{.xlabel = "t [s]", .ylabel = "v [m/s] before and after"};
-  for (std::size_t k = 0; k < 3; ++k) {
+  for (std::size_t k = 0; k < EventsData::kCount; ++k) {
     const std::string kind = EventsData::kKinds[k];
-    counts += (k ? ", " : "") + kind + ": " + std::to_string(events.count[k]);
+    // The bonds' kinds (debond, capture, escape) are counted where a run has them.
+    if (k < 3 || events.count[k] > 0)
+      counts += (k ? ", " : "") + kind + ": " + std::to_string(events.count[k]);
     if (events.count[k] == 0) continue;
     const std::string colour = std::string(" lc rgb ") + kKindColours[k];
     if (kind == "impact") {
@@ -195,13 +200,16 @@ Figure events_figure(const EventsData& events) {
           series(events.before[k].points(), "points pt 7 ps 0.6" + colour, {kind + ": v_before"}));
       panel.series.push_back(
           series(events.after[k].points(), "points pt 6 ps 0.9" + colour, {kind + ": v_after"}));
-    } else {  // the particle is at rest: v = 0 before and after
+    } else if (kind == "debond" || kind == "escape") {  // v, the same before and after
+      panel.series.push_back(
+          series(events.before[k].points(), "points pt 9 ps 0.8" + colour, {kind + ": v"}));
+    } else {  // at rest, or at the top of a flight: v = 0 before and after
       panel.series.push_back(
           series(events.before[k].points(), "points pt 5 ps 0.6" + colour, {kind + " (v = 0)"}));
     }
   }
   figure.title.push_back({counts});
-  for (std::size_t k = 0; k < 3; ++k)
+  for (std::size_t k = 0; k < EventsData::kCount; ++k)
     if (events.before[k].thinned()) {
       figure.title.push_back(kThinnedNote);
       break;
@@ -210,7 +218,7 @@ Figure events_figure(const EventsData& events) {
   // One panel per internal variable: its value at each event, by kind.
   for (std::size_t i = 0; i < events.internal.size(); ++i) {
     Panel z{.xlabel = "t [s]", .ylabel = events.internal[i] + " (internal variable) at the event"};
-    for (std::size_t k = 0; k < 3; ++k)
+    for (std::size_t k = 0; k < EventsData::kCount; ++k)
       if (events.count[k] > 0)
         z.series.push_back(series(events.internal_curves[i][k].points(),
                                   std::string("points pt 7 ps 0.6 lc rgb ") + kKindColours[k],

@@ -45,7 +45,10 @@ void check_paths(const RunOptions& o) {
 class EventFile {
  public:
   EventFile(const std::string& path, const RunOptions& o, const Model& model)
-      : file(path), internal_(model.internal.size()), unlimited_(o.force), max_rows_(o.max_rows) {
+      : file(path),
+        internal_(event_variables(model).size()),
+        unlimited_(o.force),
+        max_rows_(o.max_rows) {
     write_event_header(file.stream(), model);
   }
   void write(const Event& e) {

@@ -100,6 +100,18 @@ const KeySpec kBondingKeys[] = {
                 "-(beta gamma R^2 - eps_a)_+",
      .get = [](const Scene& s) { return bonding_value(s, &Bonding::b); },
      .set = [](Scene& s, const KeyValue& v) { bonding(s).b = std::get<double>(v); }},
+    {.table = "bonding",
+     .key = "debond_below",
+     .type = KeyType::number,
+     .range = {.lo = 0.0, .hi = 1.0},
+     .also = "default 0.01; 0: only a beta that underflows to 0",
+     .only_some = kOnly,
+     .only_with = &Capabilities::bonding,
+     .meaning = "the fraction of active bonds at or below which the bond counts as broken: "
+                "the debond event and the sweep's debond_time (a beta0 at or below it starts "
+                "broken)",
+     .get = [](const Scene& s) { return bonding_value(s, &Bonding::debond_below); },
+     .set = [](Scene& s, const KeyValue& v) { bonding(s).debond_below = std::get<double>(v); }},
 };
 
 }  // namespace

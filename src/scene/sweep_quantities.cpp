@@ -39,6 +39,15 @@ constexpr QuantityInfo kQuantities[] = {
     {Quantity::z2_T, "z2_T", ""},
     {Quantity::z3_T, "z3_T", ""},
     {Quantity::z4_T, "z4_T", ""},
+    {Quantity::debond_time, "debond_time",
+     "with [bonding]: when beta first falls to bonding.debond_below (the debond event); nan "
+     "without"},
+    {Quantity::capture_time, "capture_time",
+     "with [bonding]: the top of the first flight that turns back to the floor (the capture "
+     "event); nan without"},
+    {Quantity::escape_time, "escape_time",
+     "with [bonding] and f = 0: the first t_l from which the particle provably never comes "
+     "back (the escape event); nan without"},
     {Quantity::wall_s, "wall_s",
      "wall time of the point's method (a share of its group's in the ensemble), the "
      "reference's left out; not in the default"},
@@ -78,6 +87,7 @@ std::vector<std::string> internal_names(const Model& model) {
 // Whether a quantity has a column for this model: NAME_T for its internal variables only.
 bool exists_for(Quantity q, const Model& model) {
   if (const auto i = internal_quantity(q)) return *i < internal_names(model).size();
+  if (q >= Quantity::debond_time && q <= Quantity::escape_time) return bonded(model);
   return q != Quantity::err_internal_sup || !model.internal.empty();
 }
 

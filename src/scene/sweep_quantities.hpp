@@ -33,6 +33,9 @@ enum class Quantity {
   z2_T,
   z3_T,
   z4_T,
+  debond_time,  // a bonded model's first bond events (bond_events.hpp)
+  capture_time,
+  escape_time,
   wall_s,
   err_u_sup,
   err_v_l1,
@@ -91,6 +94,12 @@ decltype(auto) visit_quantity(Quantity q, const PointOutcome& o, double wall_s, 
     case Quantity::z4_T:
       return use(
           s.internal_final[static_cast<std::size_t>(q) - static_cast<std::size_t>(Quantity::z1_T)]);
+    case Quantity::debond_time:
+      return use(s.bonds.debond);
+    case Quantity::capture_time:
+      return use(s.bonds.capture);
+    case Quantity::escape_time:
+      return use(s.bonds.escape);
     case Quantity::wall_s:
       return use(wall_s);
     case Quantity::err_u_sup:

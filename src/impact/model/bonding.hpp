@@ -40,6 +40,10 @@ struct Bonding {
   BondForm form = BondForm::product;  // where beta stands in the damage law
   // the Frémond form's viscosity (> 0, per unit time); NaN: not given (the product form has none)
   double b = std::numeric_limits<double>::quiet_NaN();
+  // the fraction of active bonds at or below which the bond counts as broken: the run's debond
+  // event (event.hpp), in [0, 1); beta > 0 at every finite time in both forms, so 0 means "never"
+  // except by underflow
+  double debond_below = 0.01;
 };
 
 // Whether the bonding field acts at all: gamma beta0^2 != 0. Otherwise nothing of it is run.
@@ -151,6 +155,31 @@ inline void bond_step(const Bonding& b, double h, double gap_next, double& beta,
     beta = before / (1.0 + h * excess);
   }
   spent += b.gamma * ((before - beta) * (before + beta)) * bond_potential(b, gap_next);
+}
+
+// Whether a particle at gap g > 0 moving away from the floor at v > 0 under the pull alone (f = 0)
+// never comes back: the impulse the pull can still give is at most v. While it rises the gap stays
+// >= g, so R >= r = R(g) and beta decays at least at the rate c, beta(t) <= beta e^{-c t}:
+// c = gamma r^2 - eps_a in the product form, gamma r^2 / b in the Frémond form with eps_a = 0 (with
+// eps_a > 0 Frémond's beta keeps eps_a/(gamma R^2) and a finite L keeps a pull: no bound here).
+// The pull gamma beta(t)^2 min(g(t), L) with g(t) <= g + v t then gives at most
+//   gamma beta^2 min(L / (2c), g / (2c) + v / (4c^2)),
+// and v >= that keeps v(t) >= 0 for ever. Past L (g >= L) the bound is the impulse itself (R = L
+// and c are constant there, and v - gamma beta^2 L / (2c) is invariant): the test is exact, the
+// particle escapes if and only if it holds; short of L it is sufficient only.
+inline bool never_returns(const Bonding& b, double beta, double gap, double v) {
+  if (!(v > 0.0) || !(gap > 0.0)) return false;
+  const double r = bond_reach(b, gap);
+  double c = 0.0;
+  if (b.form == BondForm::fremond) {
+    if (b.eps_a > 0.0) return false;
+    c = b.gamma * (r * r) / b.b;
+  } else {
+    c = b.gamma * (r * r) - b.eps_a;
+  }
+  if (!(c > 0.0)) return false;
+  const double k = b.gamma * beta * beta;
+  return v >= k * std::min(b.L / (2.0 * c), gap / (2.0 * c) + v / (4.0 * c * c));
 }
 
 // The highest gap of a flight in the well with no damage, R = g (g <= L) and a constant force

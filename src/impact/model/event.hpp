@@ -1,6 +1,9 @@
 // The events of a run, for `impact run --events FILE`: impacts, the start of a rest on the floor
 // (stick) and its end (lift). The exact solutions know theirs; for a time-stepper an impact is a
-// contact step (N^l > 0) after a free step.
+// contact step (N^l > 0) after a free step. A bonded model (bonding.hpp) has three more, read off
+// the states of any method (bond_events.hpp): debond (beta falls to bonding.debond_below),
+// capture (a flight turns back towards the floor: its top) and escape (from here the particle
+// never comes back, f = 0).
 #pragma once
 
 #include <array>
@@ -11,7 +14,7 @@
 
 namespace impact {
 
-enum class EventKind { impact, stick, lift };
+enum class EventKind { impact, stick, lift, debond, capture, escape };
 
 inline std::string_view event_name(EventKind kind) {
   switch (kind) {
@@ -21,13 +24,20 @@ inline std::string_view event_name(EventKind kind) {
       return "stick";
     case EventKind::lift:
       return "lift";
+    case EventKind::debond:
+      return "debond";
+    case EventKind::capture:
+      return "capture";
+    case EventKind::escape:
+      return "escape";
   }
   return "impact";
 }
 
-// v_before and v_after are the velocities just before and just after the event (equal for stick
-// and lift, 0 there).
-// internal: the model's internal variables at the event (model.hpp; zero without them).
+// v_before and v_after are the velocities just before and just after the event (0 for stick, lift
+// and capture; equal, the velocity at the event, for debond and escape).
+// internal: the model's internal variables at the event (model.hpp; zero without them), for a
+// bonded model beta and D.
 struct Event {
   double t = 0.0;
   EventKind kind = EventKind::impact;

@@ -42,7 +42,13 @@ class ExactBonded {
     static_cast<State&>(s) = particle;
     return info;
   }
-  void set_event_sink(EventSink sink) { well_.set_event_sink(std::move(sink)); }
+  // The events carry beta (beta0 throughout) and D (0), as event_driven's do.
+  void set_event_sink(EventSink sink) {
+    well_.set_event_sink([sink = std::move(sink), beta0 = model_.bonding->beta0](Event e) {
+      e.internal[kBondFraction] = beta0;
+      sink(e);
+    });
+  }
   std::string failure_reason() const { return well_.failure_reason(); }
 
  private:

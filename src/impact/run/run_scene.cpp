@@ -9,6 +9,7 @@
 #include "impact/forces/work_energy.hpp"
 #include "impact/methods/capabilities.hpp"
 #include "impact/output/csv.hpp"
+#include "impact/run/bond_events.hpp"
 #include "impact/run/row_stream.hpp"
 #include "impact/run/scene.hpp"
 #include "impact/run/step_events.hpp"
@@ -56,17 +57,23 @@ RunReport run_scene(const Scene& scene, AnyStepper& stepper, const RunOutputs& o
   std::optional<double> rest_from_events;
   const bool rest_by_events = outputs.summary && own_events;
   std::optional<StepEvents> log;
+  // A bonded model's events (bond_events.hpp) for the events and the summary's fates: the
+  // method's events pass through it, to be merged with the bonds' in time.
+  std::optional<BondEvents> bonds;
+  const EventSink sink = [&](const Event& e) {
+    if (work) work->event(e);
+    if (e.kind == EventKind::stick)
+      rest_from_events = e.t;
+    else if (e.kind == EventKind::impact || e.kind == EventKind::lift)
+      rest_from_events.reset();
+    if (outputs.events) outputs.events(e);
+  };
+  if (bonded(scene.model) && (outputs.events || outputs.summary))
+    bonds.emplace(scene.model, scene.grid.h, sink);
   if (outputs.events || (work && work->follows_motion()) || rest_by_events) {
-    const EventSink sink = [&](const Event& e) {
-      if (work) work->event(e);
-      if (e.kind == EventKind::stick)
-        rest_from_events = e.t;
-      else
-        rest_from_events.reset();
-      if (outputs.events) outputs.events(e);
-    };
-    if (!attach_event_sink(stepper, sink) && outputs.events)
-      log.emplace(scene.model, scene.grid.h, outputs.events);
+    const EventSink held = [&](const Event& e) { bonds->hold(e); };
+    if (!attach_event_sink(stepper, bonds ? held : sink) && outputs.events)
+      log.emplace(scene.model, scene.grid.h, bonds ? held : outputs.events);
   }
   std::optional<ErrorObserver> errors;
   // What the reference does not follow is refused, never measured wrong.
@@ -90,12 +97,15 @@ RunReport run_scene(const Scene& scene, AnyStepper& stepper, const RunOutputs& o
   };
   const bool stoppable_summary = summary_inline && check_every > 0 && !outputs.check;
   StepWatch watch;
-  if (errors || work || log || outputs.watch || (outputs.summary && !summary_inline) ||
+  if (errors || work || log || bonds || outputs.watch || (outputs.summary && !summary_inline) ||
       (check_every > 0 && !outputs.rows && !stoppable_summary))
     watch = [&](std::int64_t l, const StateWithInternal& s, const StepInfo& info) {
       if (errors) (*errors)(l, s, info);
+      // The step's events, all of them, before the work of the steps after them (work_energy.hpp).
+      if (log && bonds) (*log)(l, s, info);
+      if (bonds) (*bonds)(l, s);
       if (work && l > 0) work->step(l, s);
-      if (log) (*log)(l, s, info);
+      if (log && !bonds) (*log)(l, s, info);
       if (outputs.summary && !summary_inline) {
         if (scene.model.internal.empty())
           summary(l, static_cast<const State&>(s), info);
@@ -157,6 +167,7 @@ RunReport run_scene(const Scene& scene, AnyStepper& stepper, const RunOutputs& o
       report.point->energy_final = impact::energy(
           scene.model, StateWithInternal{report.point->final, report.point->internal_final});
     if (rest_by_events) report.point->rest_time = rest_from_events;
+    if (bonds) report.point->bonds = bonds->fates();
   }
   if (errors) {
     // The energy error compares the E channel's E^n with the reference's E(T), as it defines E.

@@ -7,12 +7,13 @@
 #include <variant>
 
 #include "impact/model/contact.hpp"
+#include "impact/output/channels.hpp"
 #include "impact/output/csv.hpp"
 
 namespace impact {
 
 StepEvents::StepEvents(const Model& model, double h, EventSink sink)
-    : force_(model), h_(h), sink_(std::move(sink)) {}
+    : force_(model), carried_(event_variables(model).size()), h_(h), sink_(std::move(sink)) {}
 
 void StepEvents::operator()(std::int64_t l, const StateWithInternal& s, const StepInfo& info) {
   z_after_ = s.z;
@@ -22,7 +23,7 @@ void StepEvents::operator()(std::int64_t l, const StateWithInternal& s, const St
 }
 
 void StepEvents::emit(Event event) const {
-  const std::size_t n = force_.model().internal.size();
+  const std::size_t n = carried_;
   if (n > 0) {
     const double start = static_cast<double>(l_ - 1) * h_;
     const double w = std::clamp((event.t - start) / h_, 0.0, 1.0);
@@ -84,9 +85,21 @@ double StepEvents::floor_time(double mean_force) const {
   return std::isfinite(root) ? std::clamp(root, 0.0, h_) : h_;
 }
 
+std::vector<std::string> event_variables(const Model& model) {
+  std::vector<std::string> names;
+  if (bonded(model))
+    for (const ChannelInfo& c : bonding_channels()) names.emplace_back(c.name);
+  else
+    for (const InternalVariable& z : model.internal) names.push_back(z.name);
+  return names;
+}
+
 void write_event_header(std::FILE* out, const Model& model) {
   std::string line = "t,kind,v_before,v_after";
-  for (const InternalVariable& z : model.internal) line += "," + z.name;
+  for (const std::string& name : event_variables(model)) {
+    line += ',';
+    line += name;
+  }
   line += "\n";
   std::fputs(line.c_str(), out);
 }

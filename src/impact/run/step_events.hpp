@@ -21,6 +21,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include "impact/forces/force.hpp"
 #include "impact/loop/stepper.hpp"
@@ -59,6 +61,7 @@ class StepEvents {
   double floor_time(double mean_force) const;
 
   ForceFunction force_;
+  std::size_t carried_;  // event_variables(model).size()
   double h_;
   EventSink sink_;
   Phase phase_ = Phase::free;
@@ -68,9 +71,13 @@ class StepEvents {
   std::array<double, kMaxInternal> z_before_{}, z_after_{};  // at t_{l-1} and t_l
 };
 
-// The CSV of `impact run --events`: the header t,kind,v_before,v_after (then the model's internal
-// variables by name), and one row per event with numbers in round-trip precision (17 significant
-// digits), the first `internal` internal variables last. write_event returns the row's bytes.
+// The names of an event's internal values (Event::internal), the columns after v_after of the
+// events CSV: the model's internal variables, or a bonded model's beta and D (model.hpp).
+std::vector<std::string> event_variables(const Model& model);
+
+// The CSV of `impact run --events`: the header t,kind,v_before,v_after (then event_variables), and
+// one row per event with numbers in round-trip precision (17 significant digits), the first
+// `internal` internal values last. write_event returns the row's bytes.
 void write_event_header(std::FILE* out, const Model& model = {});
 std::size_t write_event(std::FILE* out, const Event& event, std::size_t internal = 0);
 

@@ -16,6 +16,7 @@
 #include "impact/ensemble/summary_lanes.hpp"
 #include "impact/loop/simulate.hpp"
 #include "impact/model/model.hpp"
+#include "impact/run/bond_events.hpp"
 #include "impact/run/error_norms.hpp"
 #include "impact/run/scene.hpp"
 
@@ -34,6 +35,7 @@ struct PointSummary {
   double max_u = 0;                                   // max over l of u^l
   std::int64_t iterations = 0;                        // Newton iterations or ODE steps (RunSummary)
   std::array<double, kMaxInternal> internal_final{};  // the internal variables at T (model.hpp)
+  BondFates bonds;  // a bonded model's first debond, capture and escape (bond_events.hpp)
 };
 
 PointSummary finish_summary(const SummaryLanes<double>& lanes, const Model& model, const Grid& grid,
