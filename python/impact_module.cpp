@@ -79,7 +79,7 @@ py::dict summary(const RunReport& report, const Model& model,
   out["err_v_l1"] = e.l1_v;
   out["err_E_T"] = e.energy_end;
   out["err_first_impact"] = e.first_impact;
-  if (!model.internal.empty()) out["err_internal_sup"] = e.sup_internal;
+  if (!model.internal.empty() || bonded(model)) out["err_internal_sup"] = e.sup_internal;
   out["reference_s"] = report.reference_seconds;
   return out;
 }
@@ -183,7 +183,9 @@ py::dict exact(py::handle scene, py::array_t<double, py::array::c_style | py::ar
     if (!std::isfinite(times[i]))
       throw py::value_error("t[" + std::to_string(i) + "] = " + round_trip(times[i]) +
                             ": the times must be finite");
-  const std::size_t m = s.model.internal.size();
+  // The internal variables, or a bonded model's beta and D, as the reference carries them.
+  const std::vector<std::string> variables = event_variables(s.model);
+  const std::size_t m = variables.size();
   py::array_t<double> u = zeros<double>(n), v = zeros<double>(n);
   std::vector<py::array_t<double>> z;
   std::vector<double*> zs;
@@ -217,7 +219,7 @@ py::dict exact(py::handle scene, py::array_t<double, py::array::c_style | py::ar
   out["t"] = py::array_t<double>(n, times);
   out["u"] = u;
   out["v"] = v;
-  for (std::size_t j = 0; j < m; ++j) out[py::str(name_of(s.model, j))] = z[j];
+  for (std::size_t j = 0; j < m; ++j) out[py::str(variables[j])] = z[j];
   return out;
 }
 

@@ -31,8 +31,8 @@ inline constexpr const char* kRunDoc =
     "  'summary': dict, with the names of impact run's OUT.json: steps, contact_steps, "
     "iterations, max_iterations_per_step (int), wall_s (float); NAME_T (float), each internal "
     "variable at the last grid time; with against='exact' err_u_sup, err_v_l1, err_E_T, "
-    "err_first_impact, reference_s and, with internal variables, err_internal_sup (the largest "
-    "|z_i - z_i,exact| over the steps).\n\n"
+    "err_first_impact, reference_s and, with internal variables (or [bonding]'s beta and D), "
+    "err_internal_sup (the largest |z_i - z_i,exact| over the steps).\n\n"
     "Raises SceneError, NumericalError, KeyboardInterrupt (see the module's help).";
 
 inline constexpr const char* kEventsDoc =

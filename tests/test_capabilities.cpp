@@ -174,6 +174,11 @@ TEST_CASE("capabilities: the table", "[capabilities]") {
   impact::Model linear;
   linear.linear = impact::LinearSpring{1.0, 0.1, 0.0};
   CHECK(impact::reference_for(linear).name == "exact");
+  // exact takes a bonding field in the well with no damage only: the reference is event_driven.
+  impact::Model bonded;
+  bonded.bonding = impact::Bonding{.gamma = 100.0};
+  CHECK(impact::reference_for(bonded).name == "event_driven");
+  CHECK(!impact::reference_refusal(bonded));
 }
 
 // method_info() and method_of<P>() index the method table by the MethodParams alternative, and the

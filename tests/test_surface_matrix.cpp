@@ -328,7 +328,7 @@ const std::vector<Surface> kSurfaces = {
      [](const TempDir& d, const Scene* s) {
        if (s) {  // the scene's reference as impact run writes it, u, v and z at the grid times
          std::string channels = "[\"u\",\"v\"";
-         for (const InternalVariable& z : s->model.internal) channels += ",\"" + z.name + "\"";
+         for (const std::string& z : event_variables(s->model)) channels += ",\"" + z + "\"";
          const Result r =
              d.run("run s.toml -q --no-provenance -o reference.csv --set method.name=" +
                    std::string(reference_for(s->model).name) +
@@ -341,13 +341,11 @@ const std::vector<Surface> kSurfaces = {
      }},
 };
 
-// Every cell: the chain is refused everywhere; the bonding field by the surfaces whose reference
-// or methods do not follow it yet (--against exact, work-precision's direct, Python's exact());
-// every other feature is handled everywhere.
+// Every cell: the chain is refused everywhere; the bonding field by the surfaces whose methods do
+// not follow it yet (work-precision's direct); every other feature is handled everywhere.
 Expect expected(const Feature& feature, const Surface& surface) {
   if (feature.name.starts_with("bonding field"))
-    for (const char* refusing : {"--against", "work-precision", "impact.exact"})
-      if (surface.name.find(refusing) != std::string::npos) return Expect::refuses;
+    if (surface.name.find("work-precision") != std::string::npos) return Expect::refuses;
   return feature.name == "the chain" ? Expect::refuses : Expect::handles;
 }
 

@@ -97,7 +97,7 @@ std::string summary_text(const Scene& scene, const RunReport& report) {
                                            : round_trip(e.first_impact).c_str(),
                 report.reference_seconds);
   text += line;
-  if (!scene.model.internal.empty()) {
+  if (!scene.model.internal.empty() || bonded(scene.model)) {
     std::snprintf(line, sizeof line, "impact: against exact: sup|z - z_exact| = %s\n",
                   round_trip(e.sup_internal).c_str());
     text += line;

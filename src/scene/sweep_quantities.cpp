@@ -56,7 +56,8 @@ constexpr QuantityInfo kQuantities[] = {
     {Quantity::err_E_T, "err_E_T",
      "|E^n - E(T)|, E as the channel E defines it, with --against exact"},
     {Quantity::err_internal_sup, "err_internal_sup",
-     "max over l and the internal variables of |z^l - z(t_l)|, with --against exact"},
+     "max over l and the internal variables of |z^l - z(t_l)| (with [bonding]: beta and D), "
+     "with --against exact"},
     {Quantity::err_first_impact, "err_first_impact",
      "first impact time (first step with N^l > 0) minus the exact one, with --against exact"},
     {Quantity::reference_s, "reference_s",
@@ -88,7 +89,7 @@ std::vector<std::string> internal_names(const Model& model) {
 bool exists_for(Quantity q, const Model& model) {
   if (const auto i = internal_quantity(q)) return *i < internal_names(model).size();
   if (q >= Quantity::debond_time && q <= Quantity::escape_time) return bonded(model);
-  return q != Quantity::err_internal_sup || !model.internal.empty();
+  return q != Quantity::err_internal_sup || !model.internal.empty() || bonded(model);
 }
 
 }  // namespace

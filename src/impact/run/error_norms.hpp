@@ -44,9 +44,10 @@ struct ErrorNorms {
 // stay in it: a polynomial per sample, bit for bit at()).
 class ReferenceSolution {
  public:
-  // With internal variables: event_driven's track, z from their initial values (model.hpp).
+  // With internal variables or a bonding field: event_driven's track, z from their initial values
+  // (model.hpp; a bonded model's beta0 and D = 0).
   ReferenceSolution(const Model& model, const State& initial, double end) : initial_(initial) {
-    if (!model.internal.empty()) {
+    if (!model.internal.empty() || bonded(model)) {
       OdeLaw law(model, OdeSettings{.end = end});
       law.set_internal(with_internal(model, initial).z);
       ode_track_.emplace(std::move(law), model, initial, 0.0);
@@ -115,7 +116,7 @@ class ErrorObserver {
   ErrorObserver(const Model& model, const State& initial, const Grid& grid)
       : exact_(model, initial, grid.end()),
         initial_energy_(initial_energy(model, initial)),
-        internal_(model.internal.size()),
+        internal_(model.internal.size() + (bonded(model) ? 2 : 0)),
         model_(model),
         grid_(grid),
         previous_(initial),
@@ -143,7 +144,11 @@ class ErrorObserver {
   ErrorNorms result(const RunSummary& run) {
     compare_pending();
     ErrorNorms e = e_;
-    e.energy_end = std::fabs(energy(model_, previous_) - energy(model_, end_));
+    // A bonded model's E holds the bonds' energy, at each one's beta (model.hpp).
+    e.energy_end =
+        bonded(model_) ? std::fabs(energy(model_, StateWithInternal{previous_, last_internal_}) -
+                                   energy(model_, StateWithInternal{end_, end_internal_}))
+                       : std::fabs(energy(model_, previous_) - energy(model_, end_));
     if (const auto t1 = exact_.first_impact(); t1 && seen_contact_)
       e.first_impact = first_crossing_ - *t1;
     e.run = run;
@@ -172,10 +177,14 @@ class ErrorObserver {
   };
   void compare_pending() {
     const auto start = std::chrono::steady_clock::now();
+    if (!pending_internal_.empty()) last_internal_ = pending_internal_.back();
     for (std::size_t k = 0; k < pending_.size(); ++k) {
       const Sample& p = pending_[k];
       const State ref = exact_.at(grid_.t(p.l));
-      if (p.l == grid_.steps) end_ = ref;
+      if (p.l == grid_.steps) {
+        end_ = ref;
+        if (internal_ > 0) end_internal_ = p.l == 0 ? last_internal_ : exact_.internal_at(grid_.t(p.l));
+      }
       e_.sup_u = std::fmax(e_.sup_u, std::fabs(p.s.u - ref.u));
       add_l1_v(std::fabs(p.s.v - ref.v));
       if (k < pending_internal_.size()) {
@@ -201,11 +210,13 @@ class ErrorObserver {
 
   ReferenceSolution exact_;
   double initial_energy_;  // E(0), work_energy.hpp
-  std::size_t internal_;   // the model's internal variables
+  std::size_t internal_;   // the model's internal variables (a bonded model's beta and D)
   Model model_;
   Grid grid_;
   State previous_;
   State end_;
+  // The method's internal variables at the last step and the reference's at T (with some).
+  std::array<double, kMaxInternal> last_internal_{}, end_internal_{};
   double first_crossing_ = 0;
   bool seen_contact_ = false;
   ErrorNorms e_;
