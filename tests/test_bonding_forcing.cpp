@@ -73,8 +73,8 @@ TEST_CASE("bonding: gamma = 0 or beta0 = 0 with f(t) runs the paper's model byte
           "[bonding][forcing][cli]") {
   TempDir dir;
   for (const Forcing& force : {harmonic("-9.81"), expression("-9.81")})
-    for (const std::string method :
-         {"direct", "moreau_jean", "event_driven", "fb_newton", "direct_located", "penalty", "exact"}) {
+    for (const std::string method : {"direct", "moreau_jean", "event_driven", "fb_newton",
+                                     "direct_located", "penalty", "exact"}) {
       // exact takes no expression (its capability), penalty no COR (it has no impact law).
       if (method == "exact" && force.name != std::string("harmonic")) continue;
       const std::string cor = method == "penalty" ? "" : "[floor]\ncor = 0.8\n";
@@ -122,8 +122,7 @@ TEST_CASE("bonding: event_driven keeps E + D at E(0) under f(t) while bonds brea
   const Case cases[] = {
       {kEscapeHead, kEscapeBonds, "0", "5 * sin(20 * t) - 100 * beta^2 * u",
        "-max(beta * (100 * u^2 - 1), 0)", "100 * beta^2 * u^2 * max(100 * u^2 - 1, 0)", 450.0},
-      {kBreakingHead, kBreakingBonds, "-9.81",
-       "-9.81 + 5 * sin(20 * t) - 100 * beta^2 * " + R,
+      {kBreakingHead, kBreakingBonds, "-9.81", "-9.81 + 5 * sin(20 * t) - 100 * beta^2 * " + R,
        "-max(beta * (100 * " + R + "^2 - 0.05), 0)",
        "200 * beta^2 * " + R + " * (u - " + R + " / 2) * max(100 * " + R + "^2 - 0.05, 0)", 0.5}};
   for (const Case& c : cases) {
@@ -133,9 +132,9 @@ TEST_CASE("bonding: event_driven keeps E + D at E(0) under f(t) while bonds brea
         "\"event_driven\"\n[[internal]]\nname = \"beta\"\ninitial = 1.0\nrate = \"" + c.beta_rate +
         "\"\n[[internal]]\nname = \"D\"\ninitial = 0.0\nrate = \"" + c.spent_rate +
         "\"\n[[internal]]\nname = \"W\"\ninitial = 0.0\nrate = \"" + work_rate + "\"\n");
-    const Bonding bonds = parse_scene(scene(c.head, harmonic(c.F), "event_driven", c.bonds),
-                                      "forcing.toml")
-                              .model.bonding.value();
+    const Bonding bonds =
+        parse_scene(scene(c.head, harmonic(c.F), "event_driven", c.bonds), "forcing.toml")
+            .model.bonding.value();
     std::vector<double> data_energy;
     double data_worst = 0;
     for (const StateWithInternal& s : data.states) {
@@ -212,7 +211,8 @@ TEST_CASE("bonding: under f(t) the E channel, a sweep's E_T and a run's last E a
   for (const char* method : {"event_driven", "direct", "moreau_jean"}) {
     INFO(method);
     dir.write("s.toml", scene(kBreakingHead, harmonic("-9.81"), method, kBreakingBonds));
-    const Result sweep = dir.run("sweep s.toml --vary initial.v0=1,2 --summary E_T,beta_T,D_T -o -");
+    const Result sweep =
+        dir.run("sweep s.toml --vary initial.v0=1,2 --summary E_T,beta_T,D_T -o -");
     INFO(sweep.err);
     REQUIRE(sweep.code == 0);
     for (const char* v0 : {"1", "2"}) {

@@ -71,7 +71,7 @@ class WorkEnergy {
   double start_;            // f(0) u(0)
   double initial_kinetic_;  // v0^2/2
   double work_ = 0.0;
-  double impacts_ = 0.0;  // the changes of v^2/2 at the impacts so far (follows_motion)
+  double impacts_ = 0.0;          // the changes of v^2/2 at the impacts so far (follows_motion)
   std::optional<Bonding> bonds_;  // a bonding field that acts (bonded(), model.hpp), or none
   double phi_;
   double initial_bonds_;  // gamma beta0^2 Phi(g(0)), 0 without bonds

@@ -152,8 +152,8 @@ RunReport run_scene(const Scene& scene, AnyStepper& stepper, const RunOutputs& o
     // that a sweep's E_T is impact run's last E bit for bit (with the bonds' energy and D from the
     // final internal state, as the rows take them).
     if (work)
-      report.point->energy_final = work->energy(
-          StateWithInternal{report.point->final, report.point->internal_final});
+      report.point->energy_final =
+          work->energy(StateWithInternal{report.point->final, report.point->internal_final});
     // A bonded model's E^n holds the bonds' energy, beta from the final internal state (model.hpp).
     if (bonded(scene.model) && !work)
       report.point->energy_final = impact::energy(
