@@ -93,6 +93,18 @@ const std::vector<Feature> kFeatures = {
      "\"moreau_jean\"\n[force]\nf = -9.81\n[floor]\ncor = 0.9\n[bonding]\ngamma = 100.0\n"
      "L = 0.03\neps_a = 0.05\nbeta0 = 1.0\nform = \"fremond\"\nb = 0.01\n"
      "[output]\nchannels = [\"u\", \"v\", \"N\", \"E\", \"beta\", \"D\"]\n"},
+    // The field under a force of time (the vibrating table seen from the table), as the harmonic
+    // part with event_driven and as an expression of t with a time-stepper.
+    {"bonding field, harmonic",
+     "[initial]\nu0 = 0.0\nv0 = 1.0\n[time]\nT = 0.5\nh = 1e-3\n[method]\nname = "
+     "\"event_driven\"\n[force]\nf = -9.81\namplitude = 5.0\nomega = 20.0\n[floor]\ncor = 0.9\n"
+     "[bonding]\ngamma = 100.0\nL = 0.03\neps_a = 0.05\nbeta0 = 1.0\n"
+     "[output]\nchannels = [\"u\", \"v\", \"N\", \"E\", \"beta\", \"D\"]\n"},
+    {"bonding field, expression of t, direct",
+     "[initial]\nu0 = 0.0\nv0 = 1.0\n[time]\nT = 0.5\nh = 1e-3\n[method]\nname = "
+     "\"direct\"\n[force]\nexpression = \"-9.81 + 5 * sin(20 * t)\"\n[floor]\ncor = 0.9\n"
+     "[bonding]\ngamma = 100.0\nL = 0.03\neps_a = 0.05\nbeta0 = 1.0\n"
+     "[output]\nchannels = [\"u\", \"v\", \"N\", \"E\", \"beta\", \"D\"]\n"},
     // The two-mass chain is a library model: no scene key gives it, so every surface that reads a
     // scene refuses one that asks for it.
     {"the chain", kHead + "[chain]\nm1 = 1.0\n"},

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "impact/forces/force.hpp"
 #include "impact/format.hpp"
 #include "impact/references/exact_bonded.hpp"
 #include "scene/toml_text.hpp"
@@ -140,10 +141,14 @@ void check_bonding(const KeyReader& r, const toml::table& root, Scene& scene) {
     r.fail_table("bonding", where,
                  "is not taken together with [[internal]] (a run's internal state holds beta "
                  "and D); write the bonds as [[internal]] data, or leave [[internal]] out");
-  if (!constant_force(scene.model))
+  // A force of t (force.amplitude/omega, a force.expression of t) is taken: its work W(t) makes
+  // E (work_energy.hpp). A force of the state is not: with it the pull and f would be two forces
+  // of the state, and no test holds E + D = E(0) for that.
+  if (state_force(scene.model))
     r.fail_table("bonding", where,
-                 "is taken with a constant force (force.f) only: the energy E of a bonded run "
-                 "with f(t) is not built yet");
+                 "is taken with a force of t only (force.f, force.amplitude and force.omega, or a "
+                 "force.expression of t), not with a force of the state (a force.expression "
+                 "that reads u, v or an internal variable, or force.linear)");
   // Whether the method takes a bonding field is refusal()'s (capabilities.hpp), asked once the
   // whole scene is read; whether exact can follow this one is a property of its flights.
   if (std::holds_alternative<ExactParams>(scene.method))

@@ -261,7 +261,6 @@ class SchemeFlight {
       next.u += stepped_.u;
       next.v += stepped_.v;
     }
-    if constexpr (Expression) now_ = next;
     if (closed_form_) {
       // The harmonic terms of the file's comment: differences of the phasor's values (exact when
       // they are close) times a/w and (a/w) c, rather than folded into the anchor, whose rounding
@@ -272,6 +271,9 @@ class SchemeFlight {
     } else if (force_.slow()) {
       add_slow_terms(s, next);
     }
+    // The state a force of the state reads at the next step's start: the whole state, the harmonic
+    // terms included (a bonding field's pull with a harmonic force reads the gap there).
+    if constexpr (Expression) now_ = next;
     return next;
   }
   // The state at t_l (gap, v) for the next step(l), where it is not the flight's own (a stepper

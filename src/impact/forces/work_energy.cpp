@@ -9,6 +9,9 @@ WorkEnergy::WorkEnergy(const Model& model, const State& initial, double h, bool 
       follows_motion_(follows_motion),
       start_(0.0),
       initial_kinetic_(0.5 * initial.v * initial.v),
+      bonds_(bonded(model) ? model.bonding : std::nullopt),
+      phi_(model.phi),
+      initial_bonds_(bonds_ ? adhesive_energy(*bonds_, bonds_->beta0, initial.u - model.phi) : 0.0),
       z0_(with_internal(model, initial).z),
       last_(with_internal(model, initial)) {
   force_.set_internal(z0_);
@@ -29,15 +32,24 @@ void WorkEnergy::event(const Event& e) {
     impacts_ += 0.5 * e.v_after * e.v_after - 0.5 * e.v_before * e.v_before;
 }
 
-double WorkEnergy::energy(const State& s) const {
+double WorkEnergy::energy(const StateWithInternal& s) const {
   if (constant_) return impact::energy(force_.model(), s);
-  if (follows_motion_) return initial_kinetic_ - start_ + impacts_;
-  return 0.5 * s.v * s.v - start_ - work_;
+  if (follows_motion_) {
+    if (!bonds_) return initial_kinetic_ - start_ + impacts_;
+    return initial_kinetic_ - start_ + initial_bonds_ + impacts_ - s.z[kBondEnergy];
+  }
+  if (!bonds_) return 0.5 * s.v * s.v - start_ - work_;
+  return 0.5 * s.v * s.v - start_ - work_ +
+         adhesive_energy(*bonds_, s.z[kBondFraction], s.u - phi_);
 }
 
 double WorkEnergy::work() const {
-  if (follows_motion_) return 0.5 * last_.v * last_.v - initial_kinetic_ - impacts_;
-  return work_;
+  if (!follows_motion_) return work_;
+  const double kinetic = 0.5 * last_.v * last_.v - initial_kinetic_ - impacts_;
+  if (!bonds_) return kinetic;
+  // The pull's work, the change of the bonds' energy plus what they spent (header comment).
+  return kinetic + adhesive_energy(*bonds_, last_.z[kBondFraction], last_.u - phi_) -
+         initial_bonds_ + last_.z[kBondEnergy];
 }
 
 double initial_energy(const Model& model, const State& initial) {

@@ -5,10 +5,17 @@
 // (d/dt (v^2/2) = (N + f) v, and N v = 0 except at impacts, where an elastic one keeps |v| and u).
 // For a constant f, W(t) = f (u(t) - u(0)) and E is (3-1); it is then computed as (3-1), so that
 // it is bit for bit the same.
+//
+// A bonding field that acts (bonding.hpp) adds its energy gamma beta^2 Phi(g) to E, and W stays the
+// work of f alone (the pull is not in W):
+//   E(t) = v^2/2 - f(0) u(0) - W(t) + gamma beta^2 Phi(g),
+// whose rate in flight is 2 gamma beta beta' Phi(g) = -D' (paper_notes/bonding_field.md, "With a
+// force of time"), so E + D = E(0) in flight. The state's z gives beta and D (model.hpp).
 #pragma once
 
 #include <array>
 #include <cstdint>
+#include <optional>
 
 #include "impact/forces/force.hpp"
 #include "impact/model/event.hpp"
@@ -34,7 +41,10 @@ namespace impact {
 //    the accuracy of the solution: rounding for exact's closed forms, rk8pd's tolerance for
 //    event_driven), and nothing at rest (u = phi stays). W(t) is then v(t)^2/2 - v0^2/2 minus what
 //    the impacts up to t changed v^2/2 by (event()), and E is E(0) plus those changes: constant in
-//    flight, lowered by each impact by what it takes.
+//    flight, lowered by each impact by what it takes. With the bonds, u'' = f - gamma beta^2 R(g)
+//    in flight, and the pull's work along the motion is the change of gamma beta^2 Phi(g) plus D
+//    (d/dt gamma beta^2 Phi = gamma beta^2 R v - D'), so W(t) is that plus the above, and E is
+//    E(0) plus the impacts' changes minus D(t), D the one the method integrated.
 class WorkEnergy {
  public:
   WorkEnergy(const Model& model, const State& initial, double h, bool follows_motion = false);
@@ -45,8 +55,11 @@ class WorkEnergy {
   void step(std::int64_t l, const State& s) { step(l, StateWithInternal{s, z0_}); }
   // An event of a method that follows the motion, in increasing t, before the steps after it.
   void event(const Event& e);
-  // E at the state last given (the initial one before any step).
-  double energy(const State& s) const;
+  // E at the state s with its internal variables (beta and D for a bonded model): s is the state
+  // last given (the initial one before any step).
+  double energy(const StateWithInternal& s) const;
+  // The same with the internal variables of the state last given.
+  double energy(const State& s) const { return energy(StateWithInternal{s, last_.z}); }
   // W(t_l) for the last l given.
   double work() const;
   bool follows_motion() const { return follows_motion_; }
@@ -58,7 +71,10 @@ class WorkEnergy {
   double start_;            // f(0) u(0)
   double initial_kinetic_;  // v0^2/2
   double work_ = 0.0;
-  double impacts_ = 0.0;  // the changes of v^2/2 at the impacts so far (follows_motion)
+  double impacts_ = 0.0;          // the changes of v^2/2 at the impacts so far (follows_motion)
+  std::optional<Bonding> bonds_;  // a bonding field that acts (bonded(), model.hpp), or none
+  double phi_;
+  double initial_bonds_;  // gamma beta0^2 Phi(g(0)), 0 without bonds
   std::array<double, kMaxInternal> z0_;
   StateWithInternal last_;  // the state at the last step
 };

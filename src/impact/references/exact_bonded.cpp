@@ -30,8 +30,9 @@ Model as_well(const Model& model) {
 std::optional<std::string> no_damage_well_refusal(const Model& model, const State& initial) {
   if (!bonded(model)) return std::nullopt;
   if (!constant_force(model))
-    return "method 'exact' follows a bonding field with a constant force only (force.f); use "
-           "event_driven";
+    return "method 'exact' follows a bonding field with a constant force only (force.f), and "
+           "this scene's force is not constant (force.amplitude/force.omega or force.expression "
+           "give f(t)): use event_driven";
   const Bonding& b = *model.bonding;
   const double k = b.gamma * b.beta0 * b.beta0;
   const double height = well_height(k, -model.f, initial.u - model.phi, initial.v);

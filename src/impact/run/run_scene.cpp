@@ -123,9 +123,8 @@ RunReport run_scene(const Scene& scene, AnyStepper& stepper, const RunOutputs& o
         [&](const OutputRow& r) {
           OutputRow row = r;
           if (energy) {
-            row.energy =
-                work ? work->energy(row.state)
-                     : impact::energy(scene.model, StateWithInternal{row.state, row.internal});
+            const StateWithInternal at{row.state, row.internal};
+            row.energy = work ? work->energy(at) : impact::energy(scene.model, at);
             if (!std::isfinite(row.energy)) [[unlikely]]
               throw NumericalError("at t = " + round_trip(scene.grid.t(row.l)) +
                                    (work ? ": the energy v^2/2 - f(0) u(0) - W(t) overflows"
@@ -160,8 +159,11 @@ RunReport run_scene(const Scene& scene, AnyStepper& stepper, const RunOutputs& o
   if (outputs.summary) {
     report.point = summary.result(report.summary);
     // With f(t), E^n is the E channel's, v^2/2 - f(0) u(0) - W, summed over the same steps, so
-    // that a sweep's E_T is impact run's last E bit for bit.
-    if (work) report.point->energy_final = work->energy(report.point->final);
+    // that a sweep's E_T is impact run's last E bit for bit (with the bonds' energy and D from the
+    // final internal state, as the rows take them).
+    if (work)
+      report.point->energy_final =
+          work->energy(StateWithInternal{report.point->final, report.point->internal_final});
     // A bonded model's E^n holds the bonds' energy, beta from the final internal state (model.hpp).
     if (bonded(scene.model) && !work)
       report.point->energy_final = impact::energy(
