@@ -71,7 +71,7 @@ std::string rows_csv(const Scene& scene, const std::vector<OutputRow>& rows) {
 std::string events_csv(const Scene& scene, const std::vector<Event>& events) {
   return printed([&](FILE* out) {
     write_event_header(out, scene.model);
-    for (const Event& e : events) write_event(out, e, scene.model.internal.size());
+    for (const Event& e : events) write_event(out, e, event_variables(scene.model).size());
   });
 }
 
