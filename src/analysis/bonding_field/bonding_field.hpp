@@ -23,12 +23,14 @@ enum class Fate {
 };
 
 // Returns {bonding_field = {<map> = {...}}} for the maps free_beta0 (f = 0, over (v0, beta0)),
-// free_eps_a (f = 0, beta0 = 0.5, over (v0, eps_a)) and gravity_beta0 (f = -9.81, over (v0,
-// beta0)): the counts of each fate, how many points the derived no-damage region holds and how many
-// disagree with it (beta changed inside, unchanged outside), the largest error of a capture time
-// inside it against half the harmonic return time, and, with f = 0, the smallest escaping v0 per
-// row and the rows where escape is not monotone in v0. Writes <map>.csv: v0, the row's key, fate,
-// capture_time, escape_time, debond_time, beta_T, no_damage (1 inside the derived region).
+// free_eps_a (f = 0, beta0 = 0.5, over (v0, eps_a)), gravity_beta0 (f = -9.81, over (v0, beta0))
+// and table_beta0 (the glued ball at rest on the vibrating table, f = -g + Gamma g sin(omega t),
+// over (Gamma, beta0)): the counts of each fate, how many points the derived no-damage region holds
+// and how many disagree with it (beta changed inside, unchanged outside), the largest error of a
+// capture time inside it against half the harmonic return time, and per row the smallest x that
+// escapes (the launches) or debonds (the table), with the rows where that fate is not monotone in
+// x. Writes <map>.csv: v0 or Gamma, the row's key, fate, capture_time, escape_time, debond_time,
+// beta_T, no_damage (1 inside the derived region).
 toml::table run_bonding_field(const ExperimentContext& context);
 
 extern const Experiment kBondingFieldExperiment;
