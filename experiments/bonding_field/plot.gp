@@ -65,7 +65,7 @@ do for [format in "png svg"] {
   set xrange [0:5.2]  # fixed range: from Gamma = 0, the table at rest
   set yrange [0:1.05]  # fixed range: beta0 spans [0, 1], drawn whole
   set parametric
-  set trange [0:1.05]
+  set trange [0:1.05]  # fixed range: the line Gamma = 1 over the whole beta0 axis
   plot for [k=0:4] results.'/table_beta0.csv' skip 1 using 1:($3 == k ? $2 : NaN) \
          with points pt 5 ps 0.9 lc rgb word(colors, k + 1) notitle, \
        1, t with lines dt 2 lw 2 lc rgb "black" \
