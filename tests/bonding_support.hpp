@@ -10,6 +10,7 @@
 #include <variant>
 #include <vector>
 
+#include "cli_support.hpp"
 #include "impact/loop/simulate.hpp"
 #include "impact/run/any_stepper.hpp"
 #include "impact/run/scene.hpp"
@@ -45,6 +46,42 @@ inline Sampled run_bonded(const std::string& text, const std::vector<std::string
              if (!own_events) step_events(l, s, info);
            });
   return out;
+}
+
+// `impact sweep` of dir's s.toml over initial.v0 = 1, 2 with --summary `summary` (the channels a
+// run writes after t,u,v, each with _T) against `impact run` at each v0: its last row less t, u
+// and v is the sweep's row less v0, bit for bit.
+inline void check_sweep_rows_are_last_rows(const TempDir& dir, const std::string& summary) {
+  const Result sweep = dir.run("sweep s.toml --vary initial.v0=1,2 --summary " + summary + " -o -");
+  INFO(sweep.err);
+  REQUIRE(sweep.code == 0);
+  for (const char* v0 : {"1", "2"}) {
+    const Result run = dir.run(std::string("run s.toml -q -o - --set initial.v0=") + v0);
+    REQUIRE(run.code == 0);
+    const std::string last = run.out.substr(run.out.rfind('\n', run.out.size() - 2) + 1);
+    std::string fields = last.substr(0, last.size() - 1);
+    for (int k = 0; k < 3; ++k) fields = fields.substr(fields.find(',') + 1);
+    CHECK_THAT(sweep.out, Catch::Contains("\n" + std::string(v0) + "," + fields + ",\n"));
+  }
+}
+
+// `impact run` of the scene `plain` as it is, with [bonding] gamma = 0 and with beta0 = 0: the
+// three write the same rows and events, byte for byte (a field that does not act is not run).
+inline void check_idle_bonds_are_plain(const TempDir& dir, const std::string& plain) {
+  dir.write("plain.toml", plain);
+  dir.write("gamma0.toml", plain + "[bonding]\ngamma = 0.0\nL = 0.1\neps_a = 0.0\nbeta0 = 1.0\n");
+  dir.write("beta0.toml", plain + "[bonding]\ngamma = 100.0\nL = 0.1\neps_a = 0.0\nbeta0 = 0.0\n");
+  const Result a = dir.run("run plain.toml -o - --events plain.ev");
+  const Result b = dir.run("run gamma0.toml -o - --events gamma0.ev");
+  const Result c = dir.run("run beta0.toml -o - --events beta0.ev");
+  INFO(a.err << b.err << c.err);
+  REQUIRE(a.code == 0);
+  CHECK(b.code == 0);
+  CHECK(c.code == 0);
+  CHECK(a.out == b.out);
+  CHECK(a.out == c.out);
+  CHECK(slurp(dir / "plain.ev") == slurp(dir / "gamma0.ev"));
+  CHECK(slurp(dir / "plain.ev") == slurp(dir / "beta0.ev"));
 }
 
 inline std::vector<Event> impacts(const std::vector<Event>& events) {

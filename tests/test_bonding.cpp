@@ -155,39 +155,16 @@ TEST_CASE("bonding: gamma = 0 or beta0 = 0 runs the paper's model byte for byte"
       "[initial]\nu0 = 0.3\nv0 = 0.5\n[force]\nf = -9.81\n[floor]\ncor = 0.8\n[time]\nT = 1.0\n"
       "h = 0.001\n[output]\nchannels = [\"u\", \"v\", \"N\", \"E\"]\n";
   for (const char* method : {"direct", "moreau_jean", "exact", "event_driven", "fb_newton"}) {
-    const std::string with = plain + "[method]\nname = \"" + method + "\"\n";
-    dir.write("plain.toml", with);
-    dir.write("gamma0.toml", with + "[bonding]\ngamma = 0.0\nL = 0.1\neps_a = 0.0\nbeta0 = 1.0\n");
-    dir.write("beta0.toml", with + "[bonding]\ngamma = 100.0\nL = 0.1\neps_a = 0.0\nbeta0 = 0.0\n");
-    const Result a = dir.run("run plain.toml -o - --events plain.ev");
-    const Result b = dir.run("run gamma0.toml -o - --events gamma0.ev");
-    const Result c = dir.run("run beta0.toml -o - --events beta0.ev");
-    INFO(method << ": " << a.err << b.err << c.err);
-    REQUIRE(a.code == 0);
-    CHECK(b.code == 0);
-    CHECK(c.code == 0);
-    CHECK(a.out == b.out);
-    CHECK(a.out == c.out);
-    CHECK(slurp(dir / "plain.ev") == slurp(dir / "gamma0.ev"));
-    CHECK(slurp(dir / "plain.ev") == slurp(dir / "beta0.ev"));
+    INFO(method);
+    check_idle_bonds_are_plain(dir, plain + "[method]\nname = \"" + method + "\"\n");
   }
 }
 
 TEST_CASE("bonding: a sweep's beta_T and D_T are the run's beta and D at T", "[bonding][cli]") {
   TempDir dir;
   dir.write("s.toml", bonded_scene("event_driven", kBreaking));
-  const Result sweep = dir.run("sweep s.toml --vary initial.v0=1,2 --summary beta_T,D_T -o -");
-  INFO(sweep.err);
-  REQUIRE(sweep.code == 0);
-  for (const char* v0 : {"1", "2"}) {
-    const Result run = dir.run(std::string("run s.toml -q -o - --set initial.v0=") + v0);
-    REQUIRE(run.code == 0);
-    // The run's last row t,u,v,beta,D against the sweep's row v0,beta_T,D_T.
-    const std::string last = run.out.substr(run.out.rfind('\n', run.out.size() - 2) + 1);
-    std::string fields = last.substr(0, last.size() - 1);
-    for (int k = 0; k < 3; ++k) fields = fields.substr(fields.find(',') + 1);
-    CHECK_THAT(sweep.out, Contains("\n" + std::string(v0) + "," + fields + ",\n"));  // no failure
-  }
+  // The run's last row t,u,v,beta,D against the sweep's row v0,beta_T,D_T.
+  check_sweep_rows_are_last_rows(dir, "beta_T,D_T");
 }
 
 TEST_CASE("bonding: a bad [bonding] value exits 2 naming the key, its value and the range",

@@ -81,20 +81,8 @@ TEST_CASE("bonding: gamma = 0 or beta0 = 0 with f(t) runs the paper's model byte
       const std::string plain = "[initial]\nu0 = 0.3\nv0 = 0.5\n[force]\n" + force.table + cor +
                                 "[time]\nT = 1.0\nh = 0.001\n[method]\nname = \"" + method +
                                 "\"\n[output]\nchannels = [\"u\", \"v\", \"N\", \"E\"]\n";
-      dir.write("plain.toml", plain);
-      dir.write("gamma0.toml", plain + "[bonding]\ngamma = 0.0\nL = 0.1\neps_a = 0.0\n");
-      dir.write("beta0.toml", plain + "[bonding]\ngamma = 100.0\nL = 0.1\nbeta0 = 0.0\n");
-      const Result a = dir.run("run plain.toml -o - --events plain.ev");
-      const Result b = dir.run("run gamma0.toml -o - --events gamma0.ev");
-      const Result c = dir.run("run beta0.toml -o - --events beta0.ev");
-      INFO(force.name << ", " << method << ": " << a.err << b.err << c.err);
-      REQUIRE(a.code == 0);
-      CHECK(b.code == 0);
-      CHECK(c.code == 0);
-      CHECK(a.out == b.out);
-      CHECK(a.out == c.out);
-      CHECK(slurp(dir / "plain.ev") == slurp(dir / "gamma0.ev"));
-      CHECK(slurp(dir / "plain.ev") == slurp(dir / "beta0.ev"));
+      INFO(force.name << ", " << method);
+      check_idle_bonds_are_plain(dir, plain);
     }
 }
 
@@ -211,19 +199,8 @@ TEST_CASE("bonding: under f(t) the E channel, a sweep's E_T and a run's last E a
   for (const char* method : {"event_driven", "direct", "moreau_jean"}) {
     INFO(method);
     dir.write("s.toml", scene(kBreakingHead, harmonic("-9.81"), method, kBreakingBonds));
-    const Result sweep =
-        dir.run("sweep s.toml --vary initial.v0=1,2 --summary E_T,beta_T,D_T -o -");
-    INFO(sweep.err);
-    REQUIRE(sweep.code == 0);
-    for (const char* v0 : {"1", "2"}) {
-      const Result run = dir.run(std::string("run s.toml -q -o - --set initial.v0=") + v0);
-      REQUIRE(run.code == 0);
-      // The run's last row t,u,v,E,beta,D against the sweep's row v0,E_T,beta_T,D_T.
-      const std::string last = run.out.substr(run.out.rfind('\n', run.out.size() - 2) + 1);
-      std::string fields = last.substr(0, last.size() - 1);
-      for (int k = 0; k < 3; ++k) fields = fields.substr(fields.find(',') + 1);
-      CHECK_THAT(sweep.out, Contains("\n" + std::string(v0) + "," + fields + ",\n"));
-    }
+    // The run's last row t,u,v,E,beta,D against the sweep's row v0,E_T,beta_T,D_T.
+    check_sweep_rows_are_last_rows(dir, "E_T,beta_T,D_T");
   }
 }
 

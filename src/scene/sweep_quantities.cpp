@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "impact/model/model.hpp"
-#include "impact/output/channels.hpp"
+#include "impact/run/step_events.hpp"
 #include "scene/scene_error.hpp"
 
 namespace impact {
@@ -74,20 +74,10 @@ std::optional<std::size_t> internal_quantity(Quantity q) {
   return static_cast<std::size_t>(q) - static_cast<std::size_t>(Quantity::z1_T);
 }
 
-// The names of the model's internal variables at T: a bonded model's state carries beta and D there
-// (model.hpp), in the order of its channels, the others their [[internal]] variables.
-std::vector<std::string> internal_names(const Model& model) {
-  std::vector<std::string> names;
-  if (bonded(model))
-    for (const ChannelInfo& c : bonding_channels()) names.emplace_back(c.name);
-  else
-    for (const auto& variable : model.internal) names.push_back(variable.name);
-  return names;
-}
-
-// Whether a quantity has a column for this model: NAME_T for its internal variables only.
+// Whether a quantity has a column for this model: NAME_T for its internal variables only (a bonded
+// model's beta and D: event_variables, step_events.hpp).
 bool exists_for(Quantity q, const Model& model) {
-  if (const auto i = internal_quantity(q)) return *i < internal_names(model).size();
+  if (const auto i = internal_quantity(q)) return *i < event_variables(model).size();
   if (q >= Quantity::debond_time && q <= Quantity::escape_time) return bonded(model);
   return q != Quantity::err_internal_sup || !model.internal.empty() || bonded(model);
 }
@@ -106,7 +96,7 @@ std::string quantities_help() {
 
 std::string quantity_name(Quantity q, const Model& model) {
   if (const auto i = internal_quantity(q)) {
-    const std::vector<std::string> names = internal_names(model);
+    const std::vector<std::string> names = event_variables(model);
     if (*i < names.size()) return names[*i] + "_T";
   }
   return std::string(kQuantities[static_cast<int>(q)].name);

@@ -43,15 +43,6 @@ double WorkEnergy::energy(const StateWithInternal& s) const {
          adhesive_energy(*bonds_, s.z[kBondFraction], s.u - phi_);
 }
 
-double WorkEnergy::work() const {
-  if (!follows_motion_) return work_;
-  const double kinetic = 0.5 * last_.v * last_.v - initial_kinetic_ - impacts_;
-  if (!bonds_) return kinetic;
-  // The pull's work, the change of the bonds' energy plus what they spent (header comment).
-  return kinetic + adhesive_energy(*bonds_, last_.z[kBondFraction], last_.u - phi_) -
-         initial_bonds_ + last_.z[kBondEnergy];
-}
-
 double initial_energy(const Model& model, const State& initial) {
   if (constant_force(model)) return energy(model, initial);
   return 0.5 * initial.v * initial.v - ForceFunction(model).at(0.0, initial) * initial.u;

@@ -60,8 +60,6 @@ class WorkEnergy {
   double energy(const StateWithInternal& s) const;
   // The same with the internal variables of the state last given.
   double energy(const State& s) const { return energy(StateWithInternal{s, last_.z}); }
-  // W(t_l) for the last l given.
-  double work() const;
   bool follows_motion() const { return follows_motion_; }
 
  private:
