@@ -77,7 +77,8 @@ TEST_CASE("bond events: past L, escape is decided exactly at v0 = gamma L / (2c)
     REQUIRE(captures.size() == 1);
     // The capture is dated by v interpolated linearly in its step: the root's error is at most
     // h^2 max|v''| / (8 |v'|), here v' = -P e^{-2ct*} = -0.01, v'' = 2c * 0.01 = 0.01, h = 1e-3:
-    // 1.25e-7; event_driven's own error (rtol 1e-10 on v ~ 10) adds 1e-9 / 0.01 = 1e-7.
+    // 1.25e-7; event_driven's own error (rtol 1e-12 on v ~ 10, ode_flight.hpp) adds at most
+    // about 1e-11 / 0.01 = 1e-9.
     CHECK(std::fabs(captures[0].t - top) < 3e-7);
     CHECK(run.summary.bonds.capture == captures[0].t);
     CHECK(captures[0].v_before == 0.0);

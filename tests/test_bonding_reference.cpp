@@ -42,8 +42,9 @@ ErrorNorms against_reference(const std::string& text, double h) {
 
 TEST_CASE("bonding: exact's well and event_driven's reference agree to the ODE's tolerance",
           "[bonding][exact][reference]") {
-  // rk8pd at rtol 1e-10 (ode_flight.hpp) on u ~ 0.05 and v ~ 1 over 6 flights, each impact
-  // located to round-off: 1e-9 allows a hundred flights' worth of its error per step.
+  // rk8pd at rtol 1e-12 (ode_flight.hpp) on v ~ 1, each impact located to round-off, over 6
+  // flights: 1e-9 is a thousand steps' worth of its tolerance (measured on an AMD EPYC family 26
+  // model 2: 3.1e-16 in u and 1.6e-15 in h sum|v|, round-off).
   const ErrorNorms e = against_reference(scene("exact", kWell), 1e-3);
   CHECK(e.sup_u < 1e-9);
   CHECK(e.l1_v < 1e-9);
